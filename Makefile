@@ -1,0 +1,36 @@
+# Two commands matter: `make demo` and `make test`. Both set up everything they need.
+JOBS ?= $(shell nproc)
+RELEASE_DIR := build/release
+TEST_DIR := build/test
+
+.PHONY: all deps release demo test bench clean
+
+all: release
+
+deps:
+	@./scripts/install-deps.sh
+
+release: deps
+	@cmake -S . -B $(RELEASE_DIR) -DCMAKE_BUILD_TYPE=Release -DPAK_BUILD_TESTS=OFF > /dev/null
+	@cmake --build $(RELEASE_DIR) -j $(JOBS)
+
+# Packs the bundled example scene: out/demo.svg and out/demo.png.
+demo: release
+	@mkdir -p out
+	./$(RELEASE_DIR)/pak pack --container examples/scene.svg --elements examples/elements \
+	  -o out/demo.svg --png out/demo.png --report out/demo-report.json
+	@echo "demo: wrote out/demo.svg, out/demo.png and out/demo-report.json"
+
+# Assertions on, AddressSanitizer + UndefinedBehaviorSanitizer, then every test.
+test: deps
+	@cmake -S . -B $(TEST_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPAK_SANITIZE=ON \
+	  -DPAK_ASSERTIONS=ON -DPAK_BUILD_BENCH=OFF > /dev/null
+	@cmake --build $(TEST_DIR) -j $(JOBS)
+	@cd $(TEST_DIR) && ASAN_OPTIONS=detect_leaks=1 ctest --output-on-failure -j $(JOBS)
+
+# Whole-run benchmark scenes; appends rows to bench/results.csv.
+bench: release
+	@./bench/run.sh $(RELEASE_DIR)
+
+clean:
+	rm -rf build out

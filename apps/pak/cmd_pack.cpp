@@ -1,0 +1,252 @@
+// `pak pack`: RepulsionPak from the command line.
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <thread>
+
+#include "command.hpp"
+#include "pak/atomic_file.hpp"
+#include "pak/clipping.hpp"
+#include "pak/error.hpp"
+#include "pak/packing_drawing.hpp"
+#include "pak/png_renderer.hpp"
+#include "pak/repulsion.hpp"
+#include "pak/scene_loader.hpp"
+#include "pak/svg_writer.hpp"
+#include "pak/verify.hpp"
+
+namespace pak::cli {
+namespace {
+
+// Every tunable option once: CLI flag, config-file key and report key share the name.
+struct NumberOption {
+  const char* name;
+  double RepulsionOptions::*field;
+  const char* help;
+};
+struct IntegerOption {
+  const char* name;
+  int RepulsionOptions::*field;
+  const char* help;
+};
+
+const NumberOption kNumberOptions[] = {
+    {"gap", &RepulsionOptions::gap, "d_gap, the spacing between elements (canonical units: the container's bounding square is 1000 wide)"},
+    {"mesh-spacing", &RepulsionOptions::meshSpacing, "distance between mesh samples, canonical units (0: same as --gap)"},
+    {"element-area", &RepulsionOptions::elementArea, "nominal area of one element as a fraction of the container; sets the count when --count is 0"},
+    {"initial-coverage", &RepulsionOptions::initialCoverage, "fraction of the container the shrunken seeds cover at the start"},
+    {"target-fill", &RepulsionOptions::targetFill, "stop when element skins cover this fraction of the container"},
+    {"k-repulsion", &RepulsionOptions::repulsionStrength, "k_rpl, repulsion strength (eq. 4.2)"},
+    {"k-overlap", &RepulsionOptions::overlapStrength, "k_ovr, overlap strength (eq. 4.4)"},
+    {"k-boundary", &RepulsionOptions::boundaryStrength, "k_bdr, boundary strength (eq. 4.5)"},
+    {"k-edge", &RepulsionOptions::edgeStrength, "k_edg for edge and shear springs (eq. 4.3): higher keeps shapes stiffer"},
+    {"k-negative-space", &RepulsionOptions::negativeSpaceStrength, "k_edg for negative-space springs"},
+    {"k-torsion", &RepulsionOptions::torsionStrength, "k_tor, pull toward the seeded orientation (eq. 4.6; 0: off)"},
+    {"soft", &RepulsionOptions::soft, "the soft parameter of eq. 4.2"},
+    {"time-step", &RepulsionOptions::timeStep, "Δt of the explicit Euler step"},
+    {"velocity-cap", &RepulsionOptions::velocityCap, "largest vertex speed (canonical units per unit time)"},
+    {"growth-rate", &RepulsionOptions::growthRate, "k_g: growth factor increase per unit time while an element has room"},
+    {"cell-size", &RepulsionOptions::cellSize, "neighbour grid cell and repulsion reach, canonical units (0: 3 × gap)"},
+    {"stall-epsilon", &RepulsionOptions::stallEpsilon, "ε of eq. 4.7: stop when the RMS fill change per iteration falls below it"},
+};
+const IntegerOption kIntegerOptions[] = {
+    {"count", &RepulsionOptions::count, "number of elements to seed (0: container area / element area)"},
+    {"max-iterations", &RepulsionOptions::maxIterations, "hard cap on simulation iterations"},
+    {"stall-window", &RepulsionOptions::stallWindow, "w of eq. 4.7, in iterations"},
+    {"threads", &RepulsionOptions::threads, "worker threads (0: all cores); the result does not depend on it"},
+};
+
+struct PackArguments {
+  std::string container;
+  std::vector<std::string> elements;
+  std::string output, png, config, report, snapshots;
+  int pngWidth = 1200;
+  int every = 500;
+  bool quiet = false, debugLayers = false;
+  std::uint64_t seed = 1;
+  RepulsionOptions options;
+  CLI::App* command = nullptr;
+};
+
+void applyConfig(PackArguments& args) {
+  std::ifstream in(args.config);
+  if (!in) throw InputError(args.config, "cannot read config file");
+  nlohmann::json json;
+  try {
+    in >> json;
+  } catch (const std::exception& e) {
+    throw InputError(args.config, std::string("not valid JSON: ") + e.what());
+  }
+  if (!json.is_object()) throw InputError(args.config, "expected a JSON object of option names to values");
+  for (auto& [key, value] : json.items()) {
+    // Flags given on the command line win over the file.
+    if (args.command->count("--" + key) > 0) continue;
+    bool known = false;
+    for (const auto& o : kNumberOptions)
+      if (key == o.name) {
+        if (!value.is_number()) throw InputError(args.config, "\"" + key + "\" must be a number");
+        args.options.*o.field = value.get<double>();
+        known = true;
+      }
+    for (const auto& o : kIntegerOptions)
+      if (key == o.name) {
+        if (!value.is_number_integer()) throw InputError(args.config, "\"" + key + "\" must be an integer");
+        args.options.*o.field = value.get<int>();
+        known = true;
+      }
+    if (key == "seed") {
+      if (!value.is_number_unsigned()) throw InputError(args.config, "\"seed\" must be a non-negative integer");
+      args.seed = value.get<std::uint64_t>();
+      known = true;
+    }
+    if (!known) throw InputError(args.config, "unknown option \"" + key + "\"");
+  }
+}
+
+std::string formatSeconds(double s) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.1f s", s);
+  return buffer;
+}
+
+int runPack(PackArguments& args) {
+  using Clock = std::chrono::steady_clock;
+  auto start = Clock::now();
+  if (!args.config.empty()) applyConfig(args);
+  args.options.seed = args.seed;
+
+  Scene scene = loadScene(args.container);
+  Library library = loadLibrary(args.elements);
+  for (const Warning& w : scene.warnings)
+    if (!args.quiet) std::fprintf(stderr, "pak: warning: %s: %s\n", w.where.c_str(), w.message.c_str());
+
+  const bool tty = isatty(STDERR_FILENO);
+  RepulsionCallbacks callbacks;
+  if (!args.quiet) {
+    callbacks.progressEvery = tty ? 50 : 1000;
+    callbacks.onProgress = [&](const RepulsionProgress& p) {
+      double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+      std::fprintf(stderr, "%spak pack: iteration %6d  fill %.3f  growing %3d/%d  %s%s", tty ? "\r" : "", p.iteration,
+                   p.fill, p.growing, p.elements, formatSeconds(elapsed).c_str(), tty ? "   " : "\n");
+      std::fflush(stderr);
+    };
+  }
+  if (!args.snapshots.empty()) {
+    std::error_code ec;
+    std::filesystem::create_directories(args.snapshots, ec);
+    if (ec) throw InputError(args.snapshots, "cannot create snapshot folder: " + ec.message());
+    callbacks.snapshotEvery = std::max(1, args.every);
+    callbacks.onSnapshot = [&](const Packing& p) {
+      char name[64];
+      std::snprintf(name, sizeof name, "snapshot-%06d.svg", p.iterations);
+      writeSvgFile(packingDrawing(scene, p), (std::filesystem::path(args.snapshots) / name).string());
+    };
+  }
+
+  auto simulationStart = Clock::now();
+  Packing packing = packRepulsion(scene, library, args.options, callbacks);
+  double simulationSeconds = std::chrono::duration<double>(Clock::now() - simulationStart).count();
+  if (!args.quiet && tty) std::fprintf(stderr, "\n");
+
+  PackingDrawingOptions drawingOptions;
+  drawingOptions.debugLayers = args.debugLayers;
+  Drawing drawing = packingDrawing(scene, packing, drawingOptions);
+  writeSvgFile(drawing, args.output);
+  if (!args.png.empty()) {
+    PngOptions png;
+    png.width = args.pngWidth;
+    writePngFile(drawing, args.png, png);
+  }
+
+  // Invariants of the result, on the art as drawn.
+  std::vector<Region> outlines;
+  for (const PlacedElement& e : packing.elements) {
+    std::vector<Region> painted;
+    for (const Shape& s : e.art) painted.push_back(paintedRegion(s));
+    outlines.push_back(unite(painted));
+  }
+  double containerArea = area(packing.container);
+  PackingCheckOptions checkOptions;
+  checkOptions.areaTolerance = 1e-6 * containerArea;
+  PackingCheck check = verifyPacking(outlines, packing.container, checkOptions);
+  double artArea = 0.0;
+  for (const Region& r : outlines) artArea += area(r);
+  double wall = std::chrono::duration<double>(Clock::now() - start).count();
+
+  if (!args.quiet)
+    std::fprintf(stderr,
+                 "pak pack: %zu elements, %d vertices, %d iterations (%s), art fill %.3f, skin fill %.3f, "
+                 "%d overlapping pairs, %d outside, %s\n",
+                 packing.elements.size(), packing.vertexCount, packing.iterations, toString(packing.stopReason),
+                 artArea / containerArea, packing.skinFill, check.overlappingPairs, check.elementsOutside,
+                 formatSeconds(wall).c_str());
+
+  if (!args.report.empty()) {
+    nlohmann::json report;
+    nlohmann::json parameters;
+    for (const auto& o : kNumberOptions) parameters[o.name] = args.options.*o.field;
+    for (const auto& o : kIntegerOptions) parameters[o.name] = args.options.*o.field;
+    parameters["seed"] = args.seed;
+    parameters["threads-used"] = args.options.threads > 0 ? args.options.threads
+                                                          : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    report["parameters"] = parameters;
+    report["units"] = "distances in canonical units: the container's bounding square is 1000 wide";
+    report["container"] = args.container;
+    report["elements-library"] = args.elements;
+    report["seed"] = args.seed;
+    report["iterations"] = packing.iterations;
+    report["stop-reason"] = toString(packing.stopReason);
+    report["wall-seconds"] = wall;
+    report["simulation-seconds"] = simulationSeconds;
+    report["fill-ratio-art"] = artArea / containerArea;
+    report["fill-ratio-skin"] = packing.skinFill;
+    report["element-count"] = packing.elements.size();
+    report["vertex-count"] = packing.vertexCount;
+    report["spring-count"] = packing.springCount;
+    report["overlap-count"] = check.overlappingPairs;
+    report["overlap-area"] = check.overlapArea;
+    report["elements-outside"] = check.elementsOutside;
+    report["outside-area"] = check.outsideArea;
+    report["canonical-scale"] = packing.canonicalScale;
+    writeFileAtomically(args.report, report.dump(2) + "\n");
+  }
+  return 0;
+}
+
+const CommandRegistrar registrar{{"pack", [](CLI::App& app) {
+  auto args = std::make_shared<PackArguments>();
+  CLI::App* cmd = app.add_subcommand(
+      "pack",
+      "Fill a container with deformable elements (RepulsionPak, thesis ch. 4).\n"
+      "Elements are meshed, seeded small, then repel, grow and deform until the container is full.\n"
+      "Example: pak pack --container heart.svg --elements animals/ -o out.svg --png out.png");
+  args->command = cmd;
+  cmd->add_option("--container,-c", args->container, "scene or container file (.svg or .path)")->required();
+  cmd->add_option("--elements,-e", args->elements, "element files and/or folders of .svg/.path files")->required();
+  cmd->add_option("-o,--output", args->output, "output SVG")->required();
+  cmd->add_option("--png", args->png, "also render a PNG preview to this file");
+  cmd->add_option("--png-width", args->pngWidth, "PNG width in pixels")->capture_default_str();
+  cmd->add_option("--seed", args->seed, "random seed; the same seed gives the same packing")->capture_default_str();
+  for (const auto& o : kNumberOptions) {
+    cmd->add_option(std::string("--") + o.name, args->options.*o.field, o.help)->capture_default_str();
+  }
+  for (const auto& o : kIntegerOptions) {
+    cmd->add_option(std::string("--") + o.name, args->options.*o.field, o.help)->capture_default_str();
+  }
+  cmd->add_option("--config", args->config, "JSON file of option names to values (command-line flags win)");
+  cmd->add_option("--report", args->report, "write a JSON report: parameters, iterations, times, fill ratios, overlaps");
+  cmd->add_option("--snapshots", args->snapshots, "write intermediate SVGs into this folder");
+  cmd->add_option("--every", args->every, "snapshot interval in iterations")->capture_default_str();
+  cmd->add_flag("--debug-layers", args->debugLayers, "add the skins and meshes as extra layers");
+  cmd->add_flag("--quiet,-q", args->quiet, "no progress output");
+  return [args] { return runPack(*args); };
+}}};
+
+}  // namespace
+}  // namespace pak::cli

@@ -1,0 +1,14 @@
+#pragma once
+// Writes files atomically: a temporary file beside the target, then a rename, so a
+// crash or an error never leaves a half-written output.
+#include <string>
+
+namespace pak {
+
+// Throws InputError if the file cannot be written.
+void writeFileAtomically(const std::string& path, const std::string& contents);
+// A temporary path beside `path` for writers that need a file name (cairo), and the commit.
+std::string temporaryPathFor(const std::string& path);
+void commitTemporary(const std::string& temporary, const std::string& path);
+
+}  // namespace pak

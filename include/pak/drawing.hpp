@@ -1,0 +1,31 @@
+#pragma once
+// A drawing to write or render: nested groups of shapes in a coordinate box. The SVG
+// writer and the PNG renderer both take a Drawing, so every output looks the same in both.
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "pak/art.hpp"
+#include "pak/box.hpp"
+
+namespace pak {
+
+struct DrawingGroup {
+  std::string id;       // e.g. "container", "elements"
+  std::string cssClass; // e.g. "element"
+  std::vector<std::pair<std::string, std::string>> attributes;  // e.g. {"data-source", "cat.svg"}
+  std::vector<Shape> shapes;
+  std::vector<DrawingGroup> children;
+};
+
+struct Drawing {
+  Box viewBox;
+  double width = 0.0, height = 0.0;  // output size in user units (0: viewBox size)
+  std::vector<DrawingGroup> groups;
+};
+
+// Everything the document shows, grouped by layer, for `pak render` and debugging.
+struct SvgDocument;
+Drawing drawingFromDocument(const SvgDocument& document);
+
+}  // namespace pak

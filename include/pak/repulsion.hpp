@@ -1,0 +1,95 @@
+#pragma once
+// RepulsionPak (thesis chapter 4): pack a container with deformable elements.
+//
+//   Packing p = packRepulsion(scene, library, options);
+//
+// The scene and library are in the input's own coordinates; Pak maps the container's
+// bounding square to a canonical 1000 × 1000 frame, simulates there, and maps back, so every
+// distance-like option below is in canonical units.
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "pak/art.hpp"
+#include "pak/scene.hpp"
+
+namespace pak {
+
+struct RepulsionOptions {
+  // --- elements and seeding (4.4)
+  double gap = 8.0;               // d_gap between neighbouring elements
+  double meshSpacing = 0.0;       // boundary/interior sample spacing; 0: same as gap
+  int count = 0;                  // elements to seed; 0: from elementArea
+  double elementArea = 1.0 / 30;  // nominal skin area of an average element / free area
+  double initialCoverage = 0.08;  // skins cover this fraction of the container at the start
+  // --- forces (4.5); the thesis uses 80/80/80/40/10 with Δt 0.1 on a 1000-wide container
+  double repulsionStrength = 80.0;       // k_rpl
+  double overlapStrength = 80.0;         // k_ovr
+  double boundaryStrength = 80.0;        // k_bdr
+  double edgeStrength = 40.0;            // k_edg for edge and shear springs
+  double negativeSpaceStrength = 10.0;   // k_edg for negative-space springs
+  double torsionStrength = 0.0;          // k_tor (0: no preferred orientation)
+  double soft = 1.0;                     // ς
+  double timeStep = 0.1;                 // Δt
+  double velocityCap = 0.5;              // |v| ≤ this (thesis: 5 Δt)
+  double growthRate = 0.01;              // k_g: g += k_g Δt per iteration while not overlapping
+  double cellSize = 0.0;                 // neighbour grid cell; 0: 3 × max(gap, spacing)
+  // --- stopping (4.5.2); whichever comes first
+  double targetFill = 0.80;       // skin area / container area
+  int stallWindow = 100;          // w of eq. 4.7
+  double stallEpsilon = 2e-5;     // ε of eq. 4.7, in fill-ratio units per iteration
+  int maxIterations = 30000;
+  // --- run
+  std::uint64_t seed = 1;
+  int threads = 0;                // 0: all cores; results do not depend on it
+};
+
+struct RepulsionProgress {
+  int iteration = 0;
+  double fill = 0.0;   // skin area / container area
+  int growing = 0;     // elements still allowed to grow
+  int elements = 0;
+};
+
+struct RepulsionCallbacks {
+  // Called every `progressEvery` iterations and at the end.
+  std::function<void(const RepulsionProgress&)> onProgress;
+  int progressEvery = 100;
+  // Called every `snapshotEvery` iterations (0: never) with the current packing.
+  std::function<void(const struct Packing&)> onSnapshot;
+  int snapshotEvery = 0;
+};
+
+struct PlacedElement {
+  int libraryIndex = 0;
+  std::string source;
+  std::vector<Shape> art;   // deformed art in input coordinates, original paint
+  Ring skin;                // deformed skin in input coordinates
+  std::vector<Vec2> meshVertices;                // input coordinates
+  std::vector<std::array<int, 3>> meshTriangles;
+  double growth = 0.0;      // final growth factor g
+};
+
+enum class StopReason { TargetFill, Stalled, IterationCap };
+const char* toString(StopReason reason);
+
+struct Packing {
+  std::vector<PlacedElement> elements;
+  Region container;              // input coordinates
+  double canonicalScale = 1.0;   // canonical units per input unit
+  int iterations = 0;
+  StopReason stopReason = StopReason::IterationCap;
+  double skinFill = 0.0;         // skin area / container area
+  int vertexCount = 0;
+  int springCount = 0;
+};
+
+// Throws InputError for an empty library or container, or bad options.
+Packing packRepulsion(const Scene& scene, const Library& library, const RepulsionOptions& options = {},
+                      const RepulsionCallbacks& callbacks = {});
+
+// Art area of each placed element (union of what it paints) over the container area.
+double artFill(const Packing& packing);
+
+}  // namespace pak

@@ -1,0 +1,41 @@
+#pragma once
+// What the packers consume: a scene (containers, fixed elements, guides, spines) and a
+// library of elements. Built by src/io from files; the core never reads files itself.
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "pak/art.hpp"
+#include "pak/polygon.hpp"
+
+namespace pak {
+
+struct Warning {
+  std::string where;    // file and element id or line
+  std::string message;  // what was skipped and why
+};
+
+struct Scene {
+  std::string source;
+  Box viewBox;                      // the document's coordinate box
+  double width = 0.0, height = 0.0; // the document's size in its own user units
+  std::vector<Shape> containerShapes;
+  Region container;                 // union of the container shapes, holes subtracted
+  std::vector<Shape> fixed;         // fixed elements: copied to the output, obstacles
+  std::vector<Polyline> guides;     // FLOWPAK direction strokes
+  std::vector<Polyline> spines;     // FLOWPAK fixed spines
+  std::vector<Warning> warnings;
+};
+
+struct ElementArt {
+  std::string source;   // file the element came from
+  std::string name;     // file stem, or group id for a multi-element SVG
+  std::vector<Shape> shapes;
+  Region outline;       // union of everything the art paints (holes kept)
+  std::optional<std::array<Vec2, 2>> spine;  // FLOWPAK spine if the file gives one
+};
+
+using Library = std::vector<ElementArt>;
+
+}  // namespace pak

@@ -1,0 +1,28 @@
+#pragma once
+// Interprets documents as scenes and element libraries (the input conventions of DESIGN.md).
+#include <string>
+#include <vector>
+
+#include "pak/scene.hpp"
+#include "pak/svg_reader.hpp"
+
+namespace pak {
+
+// Reads .svg or .path by extension.
+SvgDocument readDocument(const std::string& path, const SvgReadOptions& = {});
+
+// Layers `container`, `fixed`, `guides`, `spines`; a file without such layers whose
+// closed shapes form a region is a container by itself (.path: boundary paths minus holes).
+// Throws InputError when no usable container is found.
+Scene sceneFromDocument(const SvgDocument& document);
+Scene loadScene(const std::string& path, const SvgReadOptions& = {});
+
+// All visible shapes of the document form one element; an optional <path id="spine">.
+// Throws InputError when the element paints no area.
+ElementArt elementFromDocument(const SvgDocument& document);
+// An SVG whose root has several top-level groups gives one element per group.
+Library elementsFromDocument(const SvgDocument& document);
+// Files and folders (every .svg and .path inside, sorted by name).
+Library loadLibrary(const std::vector<std::string>& pathsOrFolders, const SvgReadOptions& = {});
+
+}  // namespace pak

@@ -1,0 +1,18 @@
+#pragma once
+// Writes a Drawing as SVG that opens in Inkscape and browsers.
+#include <string>
+
+#include "pak/drawing.hpp"
+
+namespace pak {
+
+struct SvgWriteOptions {
+  int precision = 3;  // decimals for coordinates
+};
+
+std::string toSvgString(const Drawing& drawing, const SvgWriteOptions& = {});
+// Atomic: writes a temporary file beside `path`, then renames it. Throws InputError if
+// the folder cannot be written.
+void writeSvgFile(const Drawing& drawing, const std::string& path, const SvgWriteOptions& = {});
+
+}  // namespace pak

@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# Installs the Debian packages Pak needs to build, test and benchmark.
+# Idempotent: installs only what is missing, and says what it installs.
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config
+  libpolyclipping-dev   # offsets, booleans (Clipper)
+  libgeos-dev           # Delaunay triangulation (GEOS C API)
+  libsvgpp-dev libboost-dev  # SVG parsing (SVG++ with rapidxml_ns)
+  libeigen3-dev         # sparse linear algebra
+  libnanoflann-dev      # k-d tree
+  libcairo2-dev         # PNG rendering and plots
+  libcgif-dev           # GIF output
+  libcli11-dev nlohmann-json3-dev
+  libgtest-dev libgmock-dev libbenchmark-dev
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#packages[@]} packages already installed"
+  exit 0
+fi
+
+echo "install-deps: installing ${missing[*]}"
+sudo=""
+if [ "$(id -u)" -ne 0 ]; then sudo="sudo"; fi
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -qq
+$sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+echo "install-deps: done"

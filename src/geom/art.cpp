@@ -1,0 +1,64 @@
+#include "pak/art.hpp"
+
+#include <algorithm>
+
+namespace pak {
+namespace {
+
+// The stroke of one subpath: the set of points within `halfWidth` of it. A closed subpath
+// is walked back to its first vertex so the band closes (the Minkowski sum of the ring with
+// a disc, i.e. round joins everywhere).
+Region strokeBand(const Subpath& subpath, double halfWidth, const ClipOptions& options) {
+  if (subpath.points.empty()) return {};
+  Polyline line = subpath.points;
+  if (subpath.closed && line.size() > 2) line.push_back(line.front());
+  OffsetOptions offsetOptions;
+  offsetOptions.precision = options.precision;
+  // Arcs as tight as the grid allows without exploding the vertex count on thin strokes.
+  offsetOptions.arcTolerance = std::max(options.precision, halfWidth * 0.01);
+  return offsetPolyline(line, halfWidth, offsetOptions);
+}
+
+}  // namespace
+
+Region filledRegion(const Shape& shape, const ClipOptions& options) {
+  std::vector<Ring> rings;
+  rings.reserve(shape.subpaths.size());
+  // SVG fills an open subpath as if it were closed, so both kinds are rings here.
+  for (const Subpath& subpath : shape.subpaths)
+    if (subpath.points.size() >= 3) rings.push_back(subpath.points);
+  if (rings.empty()) return {};
+  return regionFromRings(rings, shape.fillRule, options);
+}
+
+Region paintedRegion(const Shape& shape, const ClipOptions& options) {
+  std::vector<Region> parts;
+  if (shape.fill) parts.push_back(filledRegion(shape, options));
+  if (shape.stroke && shape.strokeWidth > 0.0) {
+    for (const Subpath& subpath : shape.subpaths)
+      parts.push_back(strokeBand(subpath, 0.5 * shape.strokeWidth, options));
+  }
+  if (parts.empty()) return {};
+  if (parts.size() == 1) return parts.front();
+  return unite(parts, options);
+}
+
+Box bounds(const Shape& shape) {
+  Box box;
+  for (const Subpath& subpath : shape.subpaths)
+    for (Vec2 p : subpath.points) box.add(p);
+  if (!box.empty() && shape.stroke && shape.strokeWidth > 0.0) {
+    const Vec2 half{0.5 * shape.strokeWidth, 0.5 * shape.strokeWidth};
+    box.min -= half;
+    box.max += half;
+  }
+  return box;
+}
+
+Box bounds(const std::vector<Shape>& shapes) {
+  Box box;
+  for (const Shape& shape : shapes) box.add(bounds(shape));
+  return box;
+}
+
+}  // namespace pak

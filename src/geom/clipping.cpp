@@ -1,0 +1,174 @@
+#include "pak/clipping.hpp"
+
+#include <polyclipping/clipper.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "pak/error.hpp"
+
+namespace pak {
+namespace {
+
+namespace cl = ClipperLib;
+
+// Clipper's exact arithmetic covers |coordinate| < 2^62; stay well inside it.
+constexpr double kMaxScaledCoordinate = 1e18;
+
+double scaleFor(double precision) {
+  if (!(precision > 0.0) || !std::isfinite(precision))
+    throw InputError("", "clipping precision must be a positive number");
+  return 1.0 / precision;
+}
+
+cl::IntPoint toInt(Vec2 p, double scale) {
+  const double x = p.x * scale, y = p.y * scale;
+  if (!std::isfinite(x) || !std::isfinite(y)) throw InputError("", "non-finite coordinate in geometry");
+  if (std::abs(x) > kMaxScaledCoordinate || std::abs(y) > kMaxScaledCoordinate) {
+    std::ostringstream what;
+    what << "coordinate (" << p.x << ", " << p.y << ") is too large for clipping precision "
+         << 1.0 / scale;
+    throw InputError("", what.str());
+  }
+  return {static_cast<cl::cInt>(std::llround(x)), static_cast<cl::cInt>(std::llround(y))};
+}
+
+// `wantPositive`: force Clipper's orientation (true: positive area) so that a non-zero fill
+// of outer rings and holes gives the intended region whatever the caller's orientation.
+cl::Path toPath(const Ring& ring, double scale, bool wantPositive) {
+  cl::Path path;
+  path.reserve(ring.size());
+  for (Vec2 p : ring) path.push_back(toInt(p, scale));
+  if (path.size() >= 3 && cl::Orientation(path) != wantPositive) std::reverse(path.begin(), path.end());
+  return path;
+}
+
+cl::Paths toPaths(const Region& region, double scale) {
+  cl::Paths paths;
+  for (const Polygon& polygon : region) {
+    if (polygon.outer.size() < 3) continue;
+    paths.push_back(toPath(polygon.outer, scale, true));
+    for (const Ring& hole : polygon.holes)
+      if (hole.size() >= 3) paths.push_back(toPath(hole, scale, false));
+  }
+  return paths;
+}
+
+Ring toRing(const cl::Path& path, double scale) {
+  Ring ring;
+  ring.reserve(path.size());
+  const double inv = 1.0 / scale;
+  for (const cl::IntPoint& p : path)
+    ring.push_back({static_cast<double>(p.X) * inv, static_cast<double>(p.Y) * inv});
+  return ring;
+}
+
+// An outer node holds its holes as children; islands inside a hole are the hole's children.
+void collectOuter(const cl::PolyNode& node, double scale, Region& out) {
+  Polygon polygon;
+  polygon.outer = toRing(node.Contour, scale);
+  for (const cl::PolyNode* hole : node.Childs) {
+    polygon.holes.push_back(toRing(hole->Contour, scale));
+    for (const cl::PolyNode* island : hole->Childs) collectOuter(*island, scale, out);
+  }
+  normalizeOrientation(polygon);
+  out.push_back(std::move(polygon));
+}
+
+Region toRegion(const cl::PolyTree& tree, double scale) {
+  Region region;
+  for (const cl::PolyNode* top : tree.Childs) collectOuter(*top, scale, region);
+  return region;
+}
+
+cl::PolyFillType toClipper(FillRule rule) {
+  return rule == FillRule::EvenOdd ? cl::pftEvenOdd : cl::pftNonZero;
+}
+
+Region runBoolean(cl::ClipType type, const cl::Paths& subject, const cl::Paths& clip, double scale) {
+  cl::Clipper clipper;
+  clipper.AddPaths(subject, cl::ptSubject, true);
+  clipper.AddPaths(clip, cl::ptClip, true);
+  cl::PolyTree tree;
+  clipper.Execute(type, tree, cl::pftNonZero, cl::pftNonZero);
+  return toRegion(tree, scale);
+}
+
+Region runOffset(cl::ClipperOffset& offsetter, double delta, double scale) {
+  cl::PolyTree tree;
+  offsetter.Execute(tree, delta * scale);
+  return toRegion(tree, scale);
+}
+
+void checkOffsetOptions(double delta, const OffsetOptions& options) {
+  if (!std::isfinite(delta)) throw InputError("", "offset distance must be finite");
+  if (!(options.arcTolerance > 0.0) || !std::isfinite(options.arcTolerance))
+    throw InputError("", "offset arc tolerance must be a positive number");
+}
+
+}  // namespace
+
+Region regionFromRings(const std::vector<Ring>& rings, FillRule rule, const ClipOptions& options) {
+  const double scale = scaleFor(options.precision);
+  cl::Paths paths;
+  for (const Ring& ring : rings) {
+    if (ring.size() < 3) continue;
+    cl::Path path;
+    path.reserve(ring.size());
+    for (Vec2 p : ring) path.push_back(toInt(p, scale));
+    paths.push_back(std::move(path));
+  }
+  cl::Clipper clipper;
+  clipper.AddPaths(paths, cl::ptSubject, true);
+  cl::PolyTree tree;
+  clipper.Execute(cl::ctUnion, tree, toClipper(rule), toClipper(rule));
+  return toRegion(tree, scale);
+}
+
+Region unite(const Region& a, const Region& b, const ClipOptions& options) {
+  const double scale = scaleFor(options.precision);
+  return runBoolean(cl::ctUnion, toPaths(a, scale), toPaths(b, scale), scale);
+}
+
+Region unite(const std::vector<Region>& regions, const ClipOptions& options) {
+  const double scale = scaleFor(options.precision);
+  cl::Paths all;
+  for (const Region& region : regions) {
+    cl::Paths paths = toPaths(region, scale);
+    all.insert(all.end(), paths.begin(), paths.end());
+  }
+  return runBoolean(cl::ctUnion, all, {}, scale);
+}
+
+Region subtract(const Region& a, const Region& b, const ClipOptions& options) {
+  const double scale = scaleFor(options.precision);
+  return runBoolean(cl::ctDifference, toPaths(a, scale), toPaths(b, scale), scale);
+}
+
+Region intersect(const Region& a, const Region& b, const ClipOptions& options) {
+  const double scale = scaleFor(options.precision);
+  return runBoolean(cl::ctIntersection, toPaths(a, scale), toPaths(b, scale), scale);
+}
+
+Region offset(const Region& region, double delta, const OffsetOptions& options) {
+  checkOffsetOptions(delta, options);
+  const double scale = scaleFor(options.precision);
+  cl::ClipperOffset offsetter(2.0, options.arcTolerance * scale);
+  offsetter.AddPaths(toPaths(region, scale), cl::jtRound, cl::etClosedPolygon);
+  return runOffset(offsetter, delta, scale);
+}
+
+Region offsetPolyline(const Polyline& line, double delta, const OffsetOptions& options) {
+  checkOffsetOptions(delta, options);
+  if (line.empty() || delta <= 0.0) return {};
+  const double scale = scaleFor(options.precision);
+  cl::Path path;
+  path.reserve(line.size());
+  for (Vec2 p : line) path.push_back(toInt(p, scale));
+  cl::ClipperOffset offsetter(2.0, options.arcTolerance * scale);
+  offsetter.AddPath(path, cl::jtRound, cl::etOpenRound);
+  return runOffset(offsetter, delta, scale);
+}
+
+}  // namespace pak

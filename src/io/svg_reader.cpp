@@ -1,0 +1,1000 @@
+// Reads SVG documents into flattened, painted shapes. SVG++ walks the XML tree, parses
+// attribute values (paths, transforms, lengths, colours, style="…") and turns every shape
+// into path events with relative commands, shorthands, quadratics, arcs and basic shapes
+// already rewritten as absolute lines and cubics. This file adds what SVG++ leaves to its
+// user: property inheritance, the current transform, layers, paint servers, flattening and
+// the checks that turn bad input into InputError.
+//
+// All SVG++ code lives in this one translation unit on purpose: it takes ~20 s to compile.
+#include "pak/svg_reader.hpp"
+
+#include <rapidxml_ns/rapidxml_ns.hpp>
+#include <svgpp/policy/xml/rapidxml_ns.hpp>
+#include <svgpp/svgpp.hpp>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <fstream>
+#include <map>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <vector>
+
+#include "pak/error.hpp"
+
+namespace pak {
+namespace {
+
+using XmlNode = rapidxml_ns::xml_node<char>;
+namespace tag = svgpp::tag;
+
+constexpr std::string_view kSvgNamespace = "http://www.w3.org/2000/svg";
+constexpr std::string_view kInkscapeNamespace = "http://www.inkscape.org/namespaces/inkscape";
+// Coordinates beyond this are a broken file, not a drawing (and would overflow the integer
+// grid of the boolean operations).
+constexpr double kAbsurdCoordinate = 1e9;
+// Flattening never cuts one cubic into more pieces than this, whatever the tolerance.
+constexpr int kMaxSegmentsPerCubic = 4096;
+
+// Layer names with a meaning in Pak (DESIGN.md, "Input conventions").
+bool isKnownLayerName(const std::string& name) {
+  return name == "container" || name == "fixed" || name == "guides" || name == "spines" ||
+         name == "elements" || name == "holes";
+}
+
+std::string lowerCased(std::string text) {
+  for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return text;
+}
+
+template <class Range>
+std::string toString(const Range& range) {
+  return std::string(boost::begin(range), boost::end(range));
+}
+
+std::string formatNumber(double value) {
+  std::ostringstream out;
+  out.precision(10);
+  out << value;
+  return out.str();
+}
+
+// ---------------------------------------------------------------------------------------
+// Affine maps, stored as SVG's matrix(a b c d e f): x' = a x + c y + e, y' = b x + d y + f.
+struct Affine {
+  double a = 1, b = 0, c = 0, d = 1, e = 0, f = 0;
+
+  Vec2 apply(Vec2 p) const { return {a * p.x + c * p.y + e, b * p.x + d * p.y + f}; }
+  // Scale factor for lengths such as stroke widths (exact for similarity transforms).
+  double lengthScale() const { return std::sqrt(std::abs(a * d - b * c)); }
+  static Affine translation(double tx, double ty) { return {1, 0, 0, 1, tx, ty}; }
+  static Affine scaling(double sx, double sy) { return {sx, 0, 0, sy, 0, 0}; }
+};
+
+// `outer * inner` applies `inner` first.
+Affine operator*(const Affine& m, const Affine& n) {
+  return {m.a * n.a + m.c * n.b, m.b * n.a + m.d * n.b, m.a * n.c + m.c * n.d,
+          m.b * n.c + m.d * n.d, m.a * n.e + m.c * n.f + m.e, m.b * n.e + m.d * n.f + m.f};
+}
+
+// ---------------------------------------------------------------------------------------
+// Paint as written in the file; resolved to a Color once the whole document is read
+// (a gradient may be defined after the shape that uses it).
+enum class PaintKind { None, Color, CurrentColor };
+
+struct SolidPaint {
+  PaintKind kind = PaintKind::None;
+  std::uint32_t rgb = 0;  // 0xRRGGBB
+};
+
+struct Paint {
+  SolidPaint solid;
+  std::string server;                 // id of a gradient or pattern; empty for solid paint
+  std::optional<SolidPaint> fallback; // fill="url(#g) red"
+};
+
+Paint solidPaint(PaintKind kind, std::uint32_t rgb = 0) { return Paint{{kind, rgb}, {}, {}}; }
+
+// Inherited presentation properties (SVG's defaults).
+struct Style {
+  Paint fill = solidPaint(PaintKind::Color, 0x000000);
+  Paint stroke = solidPaint(PaintKind::None);
+  double fillOpacity = 1.0;
+  double strokeOpacity = 1.0;
+  double strokeWidth = 1.0;
+  FillRule fillRule = FillRule::NonZero;
+  bool visible = true;
+  std::uint32_t color = 0x000000;  // the `color` property, used by currentColor
+};
+
+// ---------------------------------------------------------------------------------------
+// Geometry of one shape after its transform, before flattening.
+struct CurveSegment {
+  bool cubic = false;
+  Vec2 control1, control2;  // used when cubic
+  Vec2 end;
+};
+
+struct CurveSubpath {
+  Vec2 start;
+  std::vector<CurveSegment> segments;
+  bool closed = false;
+};
+
+struct PendingShape {
+  Shape shape;  // everything but the subpaths and the paint
+  std::vector<CurveSubpath> subpaths;
+  Paint fill, stroke;
+  double fillOpacity = 1.0, strokeOpacity = 1.0;
+  std::uint32_t color = 0;
+  std::string description;  // for messages: <path id="…">
+};
+
+struct GradientStop {
+  std::uint32_t rgb = 0;
+  double opacity = 1.0;
+};
+
+struct Gradient {
+  std::string href;  // stops inherited from another gradient when it has none
+  std::vector<GradientStop> stops;
+};
+
+// Everything one reading shares between the element contexts.
+struct ReaderState {
+  std::string file;
+  SvgDocument* document = nullptr;
+  // Lengths with units; percentages are relative to the root viewBox once known.
+  svgpp::factory::length::unitless<> lengths;
+  std::vector<PendingShape> shapes;
+  std::map<std::string, Gradient> gradients;
+  std::string currentElement = "<svg>";  // the element being read, for error messages
+  std::optional<Box> viewBox;
+  std::optional<double> width, height;
+  int topLevelGroups = 0;
+
+  void warn(const std::string& where, const std::string& message) {
+    document->warnings.push_back({file + (where.empty() ? "" : ": " + where), message});
+  }
+};
+
+// SVG++ hands its error policy only the context of the failing element (sometimes wrapped
+// in an adapter), so the policy finds the current reading here. One per thread.
+thread_local ReaderState* currentReader = nullptr;
+
+// ---------------------------------------------------------------------------------------
+// Error policy: geometry that cannot be read is an InputError naming the element;
+// unknown elements, attributes and CSS properties (Inkscape and Illustrator write many)
+// are skipped, with a warning where the artist may care.
+bool isGeometryAttribute(std::string_view name) {
+  static const char* const names[] = {"d",  "points", "x",  "y",  "width", "height",
+                                      "rx", "ry",     "r",  "cx", "cy",    "x1",
+                                      "y1", "x2",     "y2", "transform", "viewBox"};
+  return std::any_of(std::begin(names), std::end(names),
+                     [&](const char* n) { return name == n; });
+}
+
+bool looksNonFinite(const std::string& value) {
+  std::string lower = lowerCased(value);
+  return lower.find("nan") != std::string::npos || lower.find("inf") != std::string::npos;
+}
+
+class NodeContext;
+
+struct ErrorPolicy {
+  using context_type = NodeContext;  // every context derives from it
+
+  template <class Context, class XmlElement, class Name>
+  static bool unknown_element(const Context&, const XmlElement&, const Name& name) {
+    if (currentReader)
+      currentReader->warn(currentReader->currentElement,
+                          "unknown element <" + toString(name) + "> skipped");
+    return true;
+  }
+  template <class Context, class... Rest>
+  static bool unknown_attribute(const Context&, const Rest&...) {
+    return true;
+  }
+  template <class Context, class... Rest>
+  static bool unexpected_attribute(const Context&, const Rest&...) {
+    return true;
+  }
+  template <class Context, class XmlElement>
+  static bool unexpected_element(const Context&, const XmlElement& element) {
+    if (currentReader)
+      currentReader->warn(currentReader->currentElement,
+                          "<" + std::string(element->local_name(), element->local_name_size()) +
+                              "> is not allowed here; skipped");
+    return true;
+  }
+  template <class Context, class AttributeTag>
+  static bool required_attribute_not_found(const Context&, AttributeTag) {
+    if (currentReader)
+      currentReader->warn(currentReader->currentElement,
+                          std::string("required attribute ") +
+                              svgpp::attribute_name<char>::get<AttributeTag>() +
+                              " is missing; element skipped");
+    return true;
+  }
+  template <class Context, class AttributeTag>
+  static bool negative_value(const Context&, AttributeTag) {
+    if (currentReader)
+      currentReader->warn(currentReader->currentElement,
+                          std::string("negative ") +
+                              svgpp::attribute_name<char>::get<AttributeTag>() +
+                              "; element not drawn (SVG error)");
+    return true;
+  }
+  template <class Context, class AttributeTag, class Value>
+  static bool parse_failed(const Context&, AttributeTag, const Value& value) {
+    const std::string name = svgpp::attribute_name<char>::get<AttributeTag>();
+    std::string text = toString(value);
+    if (text.size() > 80) text = text.substr(0, 77) + "...";
+    const std::string where =
+        currentReader ? currentReader->currentElement : std::string("<svg>");
+    if (isGeometryAttribute(name)) {
+      const std::string file = currentReader ? currentReader->file : std::string();
+      throw InputError(file, where + ": attribute " + name + "=\"" + text + "\" " +
+                                 (looksNonFinite(text) ? "contains a non-finite number (NaN or infinity)"
+                                                       : "cannot be parsed"));
+    }
+    if (currentReader)
+      currentReader->warn(where, "ignored " + name + "=\"" + text + "\" (cannot be parsed)");
+    return true;
+  }
+};
+
+// Attribute order: the root's viewBox first, so that percentages in width/height resolve
+// against it.
+struct AttributeOrder {
+  static const bool parse_style = true;
+  static const bool css_hides_presentation_attribute = true;
+  struct get_priority_attributes_by_element {
+    template <class ElementTag>
+    struct apply {
+      using type = typename boost::mpl::if_<std::is_same<ElementTag, tag::element::svg>,
+                                            boost::mpl::vector1<tag::attribute::viewBox>,
+                                            boost::mpl::vector0<>>::type;
+    };
+  };
+  using get_deferred_attributes_by_element = boost::mpl::always<boost::mpl::empty_sequence>;
+  // Missing geometry attributes simply draw nothing, as browsers do.
+  using get_required_attributes_by_element = boost::mpl::always<boost::mpl::empty_sequence>;
+};
+
+// ---------------------------------------------------------------------------------------
+// Contexts: one object per element, living on the stack while SVG++ reads the element and
+// its children. A child starts as a copy of its parent's inherited state.
+template <class Tag>
+constexpr bool isPaintAttribute =
+    std::is_same_v<Tag, tag::attribute::fill> || std::is_same_v<Tag, tag::attribute::stroke>;
+
+std::string attributeOf(const XmlNode* node, std::string_view name) {
+  if (!node) return {};
+  for (auto* a = node->first_attribute(); a; a = a->next_attribute())
+    if (std::string_view(a->name(), a->name_size()) == name) return std::string(a->value(), a->value_size());
+  return {};
+}
+
+std::string inkscapeLabel(const XmlNode* node) {
+  for (auto* a = node->first_attribute(); a; a = a->next_attribute()) {
+    std::string_view local(a->local_name(), a->local_name_size());
+    std::string_view ns(a->namespace_uri(), a->namespace_uri_size());
+    std::string_view qname(a->name(), a->name_size());
+    if (local == "label" && (ns == kInkscapeNamespace || qname == "inkscape:label"))
+      return std::string(a->value(), a->value_size());
+  }
+  return {};
+}
+
+class NodeContext {
+ public:
+  using length_factory_type = svgpp::factory::length::unitless<>;
+
+  // The root <svg>.
+  NodeContext(ReaderState& state, const XmlNode* node) : state_(&state), node_(node), isRoot_(true) {
+    tag_ = "svg";
+    id_ = attributeOf(node, "id");
+  }
+
+  // Any other element.
+  NodeContext(NodeContext& parent, const XmlNode* node)
+      : state_(parent.state_),
+        node_(node),
+        style_(parent.style_),
+        parentCtm_(parent.childCtm()),
+        inheritedOpacity_(parent.effectiveOpacity()),
+        ancestorHidden_(parent.hidden()),
+        nonRendered_(parent.nonRendered_),
+        layer_(parent.layer_),
+        layerKnown_(parent.layerKnown_),
+        topGroup_(parent.topGroup_) {
+    tag_ = std::string(node->local_name(), node->local_name_size());
+    id_ = attributeOf(node, "id");
+    if (tag_ == "defs") nonRendered_ = true;
+    if (tag_ == "g") {
+      if (parent.isRoot_) topGroup_ = state_->topLevelGroups++;
+      enterGroupLayer();
+    }
+    state_->currentElement = describe();
+  }
+
+  NodeContext(const NodeContext&) = delete;
+  NodeContext& operator=(const NodeContext&) = delete;
+
+  const length_factory_type& length_factory() const { return state_->lengths; }
+  void on_exit_element() {}
+  template <class Range>
+  void set_text(const Range&) {}
+
+  void transform_matrix(const boost::array<double, 6>& m) {
+    for (double v : m)
+      if (!std::isfinite(v) || std::abs(v) > kAbsurdCoordinate)
+        throw InputError(state_->file, describe() + ": transform has a non-finite or absurd value " +
+                                           formatNumber(v));
+    ownTransform_ = Affine{m[0], m[1], m[2], m[3], m[4], m[5]};
+  }
+
+  // --- the viewport attributes of <svg> elements
+  void set(tag::attribute::viewBox, double x, double y, double w, double h) {
+    for (double v : {x, y, w, h})
+      if (!std::isfinite(v) || std::abs(v) > kAbsurdCoordinate)
+        throw InputError(state_->file, describe() + ": viewBox has a non-finite or absurd value " +
+                                           formatNumber(v));
+    if (w <= 0 || h <= 0) {
+      state_->warn(describe(), "viewBox with zero or negative size ignored");
+      return;
+    }
+    Box box;
+    box.add(Vec2{x, y});
+    box.add(Vec2{x + w, y + h});
+    viewBox_ = box;
+    if (isRoot_) {
+      state_->viewBox = box;
+      state_->lengths.set_viewport_size(w, h);
+    }
+  }
+  void set(tag::attribute::width, double v) { checkedViewportLength("width", v, viewportWidth_); }
+  void set(tag::attribute::height, double v) { checkedViewportLength("height", v, viewportHeight_); }
+  void set(tag::attribute::x, double v) { viewportX_ = v; }
+  void set(tag::attribute::y, double v) { viewportY_ = v; }
+
+  // --- paint
+  template <class P>
+    requires isPaintAttribute<P>
+  void set(P, tag::value::none) { paintOf(P()) = solidPaint(PaintKind::None); }
+  template <class P>
+    requires isPaintAttribute<P>
+  void set(P, tag::value::currentColor) { paintOf(P()) = solidPaint(PaintKind::CurrentColor); }
+  template <class P>
+    requires isPaintAttribute<P>
+  void set(P, int rgb) { paintOf(P()) = solidPaint(PaintKind::Color, static_cast<std::uint32_t>(rgb)); }
+  template <class P>
+    requires isPaintAttribute<P>
+  void set(P, int rgb, tag::skip_icc_color) { set(P(), rgb); }
+  template <class P, class Range>
+    requires isPaintAttribute<P>
+  void set(P, tag::iri_fragment, const Range& id) { paintOf(P()) = serverPaint(id, std::nullopt); }
+  template <class P, class Range>
+    requires isPaintAttribute<P>
+  void set(P, tag::iri_fragment, const Range& id, tag::value::none) {
+    paintOf(P()) = serverPaint(id, SolidPaint{PaintKind::None, 0});
+  }
+  template <class P, class Range>
+    requires isPaintAttribute<P>
+  void set(P, tag::iri_fragment, const Range& id, tag::value::currentColor) {
+    paintOf(P()) = serverPaint(id, SolidPaint{PaintKind::CurrentColor, 0});
+  }
+  template <class P, class Range>
+    requires isPaintAttribute<P>
+  void set(P, tag::iri_fragment, const Range& id, int rgb) {
+    paintOf(P()) = serverPaint(id, SolidPaint{PaintKind::Color, static_cast<std::uint32_t>(rgb)});
+  }
+  template <class P, class Range>
+    requires isPaintAttribute<P>
+  void set(P, tag::iri_fragment, const Range& id, int rgb, tag::skip_icc_color) {
+    set(P(), tag::iri_fragment(), id, rgb);
+  }
+  // A paint server in another file: only its fallback can be used.
+  template <class P, class Range>
+    requires isPaintAttribute<P>
+  void set(P, const Range& iri) {
+    state_->warn(describe(), "external paint " + toString(iri) + " not supported; painted grey");
+    paintOf(P()) = solidPaint(PaintKind::Color, 0x808080);
+  }
+  template <class P, class Range>
+    requires isPaintAttribute<P>
+  void set(P, const Range&, tag::value::none) { set(P(), tag::value::none()); }
+  template <class P, class Range>
+    requires isPaintAttribute<P>
+  void set(P, const Range&, tag::value::currentColor) { set(P(), tag::value::currentColor()); }
+  template <class P, class Range>
+    requires isPaintAttribute<P>
+  void set(P, const Range&, int rgb) { set(P(), rgb); }
+  template <class P, class Range>
+    requires isPaintAttribute<P>
+  void set(P, const Range&, int rgb, tag::skip_icc_color) { set(P(), rgb); }
+
+  void set(tag::attribute::color, int rgb) { style_.color = static_cast<std::uint32_t>(rgb); }
+  void set(tag::attribute::color, int rgb, tag::skip_icc_color) { set(tag::attribute::color(), rgb); }
+
+  // --- other presentation properties
+  void set(tag::attribute::fill_opacity, double v) { style_.fillOpacity = std::clamp(v, 0.0, 1.0); }
+  void set(tag::attribute::stroke_opacity, double v) { style_.strokeOpacity = std::clamp(v, 0.0, 1.0); }
+  void set(tag::attribute::opacity, double v) { ownOpacity_ = std::clamp(v, 0.0, 1.0); }
+  void set(tag::attribute::stroke_width, double v) {
+    if (std::isfinite(v) && v >= 0) style_.strokeWidth = v;
+  }
+  void set(tag::attribute::fill_rule, tag::value::nonzero) { style_.fillRule = FillRule::NonZero; }
+  void set(tag::attribute::fill_rule, tag::value::evenodd) { style_.fillRule = FillRule::EvenOdd; }
+  void set(tag::attribute::display, tag::value::none) { displayNone_ = true; }
+  void set(tag::attribute::display, tag::value::inherit) {}
+  template <class Value>
+  void set(tag::attribute::display, Value) { displayNone_ = false; }
+  void set(tag::attribute::visibility, tag::value::visible) { style_.visible = true; }
+  void set(tag::attribute::visibility, tag::value::hidden) { style_.visible = false; }
+  void set(tag::attribute::visibility, tag::value::collapse) { style_.visible = false; }
+  // `inherit` on a non-inherited property (opacity, display): keep the default.
+  template <class AttributeTag>
+  void set(AttributeTag, tag::value::inherit) {}
+
+ protected:
+  std::string describe() const {
+    std::string text = "<" + tag_;
+    if (!id_.empty()) text += " id=\"" + id_ + "\"";
+    return text + ">";
+  }
+  Affine ctm() const { return parentCtm_ * ownTransform_; }
+  double effectiveOpacity() const { return inheritedOpacity_ * ownOpacity_; }
+  bool hidden() const { return ancestorHidden_ || displayNone_; }
+
+  ReaderState* state_;
+  const XmlNode* node_;
+  std::string tag_, id_;
+  Style style_;
+  Affine parentCtm_, ownTransform_;
+  double inheritedOpacity_ = 1.0, ownOpacity_ = 1.0;
+  bool displayNone_ = false;
+  bool ancestorHidden_ = false;
+  bool nonRendered_ = false;  // inside <defs>: definitions, never drawn directly
+  std::string layer_;
+  bool layerKnown_ = false;
+  int topGroup_ = -1;
+  bool isRoot_ = false;
+
+ private:
+  // The layer of a named group: the nearest ancestor named like a Pak layer wins, else the
+  // outermost named group.
+  void enterGroupLayer() {
+    const std::string label = lowerCased(inkscapeLabel(node_));
+    const std::string id = lowerCased(id_);
+    std::string name;
+    if (isKnownLayerName(label)) name = label;
+    else if (isKnownLayerName(id)) name = id;
+    else name = !label.empty() ? label : id;
+    if (name.empty()) return;
+    const bool known = isKnownLayerName(name);
+    if (known || layer_.empty()) {
+      if (known || !layerKnown_) {
+        layer_ = name;
+        layerKnown_ = known;
+        auto& layers = state_->document->layers;
+        if (std::find(layers.begin(), layers.end(), name) == layers.end()) layers.push_back(name);
+      }
+    }
+  }
+
+  void checkedViewportLength(const char* name, double v, std::optional<double>& out) {
+    if (!std::isfinite(v) || std::abs(v) > kAbsurdCoordinate)
+      throw InputError(state_->file, describe() + ": " + name + " is non-finite or absurd: " + formatNumber(v));
+    if (v <= 0) return;  // zero or negative: as if absent
+    out = v;
+    if (isRoot_) {
+      (std::string_view(name) == "width" ? state_->width : state_->height) = v;
+      // Without a viewBox, percentages of later elements are relative to the document size.
+      if (!state_->viewBox)
+        state_->lengths.set_viewport_size(state_->width.value_or(0), state_->height.value_or(0));
+    }
+  }
+
+  template <class P>
+  Paint& paintOf(P) {
+    if constexpr (std::is_same_v<P, tag::attribute::fill>) return style_.fill;
+    else return style_.stroke;
+  }
+
+  template <class Range>
+  static Paint serverPaint(const Range& id, std::optional<SolidPaint> fallback) {
+    Paint paint;
+    paint.server = toString(id);
+    paint.fallback = fallback;
+    return paint;
+  }
+
+  // A nested <svg> maps its viewBox into its viewport (x, y, width, height), centred and
+  // scaled uniformly (preserveAspectRatio's default). The root's viewBox is *the*
+  // coordinate system of the document, so it maps nothing.
+  Affine childCtm() const {
+    Affine m = ctm();
+    if (isRoot_ || tag_ != "svg") return m;
+    m = m * Affine::translation(viewportX_, viewportY_);
+    if (!viewBox_) return m;
+    const double boxW = viewBox_->width(), boxH = viewBox_->height();
+    const double w = viewportWidth_.value_or(state_->viewBox ? state_->viewBox->width() : boxW);
+    const double h = viewportHeight_.value_or(state_->viewBox ? state_->viewBox->height() : boxH);
+    const double s = std::min(w / boxW, h / boxH);
+    return m * Affine::translation((w - boxW * s) / 2, (h - boxH * s) / 2) * Affine::scaling(s, s) *
+           Affine::translation(-viewBox_->min.x, -viewBox_->min.y);
+  }
+
+  std::optional<Box> viewBox_;
+  std::optional<double> viewportWidth_, viewportHeight_;
+  double viewportX_ = 0, viewportY_ = 0;
+};
+
+// <path>, <rect>, <circle>, <ellipse>, <line>, <polyline>, <polygon>: SVG++ converts all of
+// them to absolute move/line/cubic/close events.
+class ShapeContext : public NodeContext {
+ public:
+  ShapeContext(NodeContext& parent, const XmlNode* node) : NodeContext(parent, node) {}
+
+  void path_move_to(double x, double y, tag::coordinate::absolute) {
+    CurveSubpath subpath;
+    subpath.start = local(x, y);
+    subpaths_.push_back(std::move(subpath));
+    current_ = subpaths_.back().start;
+  }
+  void path_line_to(double x, double y, tag::coordinate::absolute) {
+    CurveSegment segment;
+    segment.end = local(x, y);
+    append(segment);
+  }
+  void path_cubic_bezier_to(double x1, double y1, double x2, double y2, double x, double y,
+                            tag::coordinate::absolute) {
+    CurveSegment segment;
+    segment.cubic = true;
+    segment.control1 = local(x1, y1);
+    segment.control2 = local(x2, y2);
+    segment.end = local(x, y);
+    append(segment);
+  }
+  void path_close_subpath() {
+    if (subpaths_.empty()) return;
+    subpaths_.back().closed = true;
+    current_ = subpaths_.back().start;
+  }
+  void path_exit() {}
+
+  void on_exit_element() {
+    if (hidden() || nonRendered_ || !style_.visible || subpaths_.empty()) return;
+    PendingShape pending;
+    pending.description = describe();
+    const Affine m = ctm();
+    for (CurveSubpath& subpath : subpaths_) {
+      subpath.start = mapped(m, subpath.start);
+      for (CurveSegment& segment : subpath.segments) {
+        if (segment.cubic) {
+          segment.control1 = mapped(m, segment.control1);
+          segment.control2 = mapped(m, segment.control2);
+        }
+        segment.end = mapped(m, segment.end);
+      }
+    }
+    pending.subpaths = std::move(subpaths_);
+    Shape& shape = pending.shape;
+    shape.strokeWidth = style_.strokeWidth * m.lengthScale();
+    shape.opacity = effectiveOpacity();
+    shape.fillRule = style_.fillRule;
+    shape.id = id_;
+    shape.tag = tag_;
+    shape.layer = layer_;
+    shape.topGroup = topGroup_;
+    pending.fill = style_.fill;
+    pending.stroke = style_.stroke;
+    pending.fillOpacity = style_.fillOpacity;
+    pending.strokeOpacity = style_.strokeOpacity;
+    pending.color = style_.color;
+    state_->shapes.push_back(std::move(pending));
+  }
+
+ private:
+  // Local coordinates are only checked for finiteness here; the absurdity check happens
+  // after the transform, on the coordinates Pak will use.
+  Vec2 local(double x, double y) {
+    if (!std::isfinite(x) || !std::isfinite(y))
+      throw InputError(state_->file, describe() + ": non-finite coordinate (" + formatNumber(x) +
+                                         ", " + formatNumber(y) + ")");
+    return {x, y};
+  }
+
+  Vec2 mapped(const Affine& m, Vec2 p) const {
+    const Vec2 q = m.apply(p);
+    if (!std::isfinite(q.x) || !std::isfinite(q.y))
+      throw InputError(state_->file, describe() + ": coordinate is not a finite number after its transform");
+    if (std::abs(q.x) > kAbsurdCoordinate || std::abs(q.y) > kAbsurdCoordinate)
+      throw InputError(state_->file, describe() + ": absurd coordinate (" + formatNumber(q.x) + ", " +
+                                         formatNumber(q.y) + "), beyond ±1e9");
+    return q;
+  }
+
+  // After a closepath, drawing continues from the closed subpath's start in a new subpath.
+  void append(const CurveSegment& segment) {
+    if (subpaths_.empty() || subpaths_.back().closed) {
+      CurveSubpath subpath;
+      subpath.start = current_;
+      subpaths_.push_back(std::move(subpath));
+    }
+    subpaths_.back().segments.push_back(segment);
+    current_ = segment.end;
+  }
+
+  std::vector<CurveSubpath> subpaths_;
+  Vec2 current_;
+};
+
+// <linearGradient>/<radialGradient>: Pak paints flat colours, so a gradient becomes the
+// mean of its stops.
+class GradientContext : public NodeContext {
+ public:
+  GradientContext(NodeContext& parent, const XmlNode* node) : NodeContext(parent, node) {}
+
+  using NodeContext::set;
+  template <class Range>
+  void set(tag::attribute::xlink::href, tag::iri_fragment, const Range& id) { gradient_.href = toString(id); }
+  template <class Range>
+  void set(tag::attribute::xlink::href, const Range&) {}
+
+  void addStop(const GradientStop& stop) { gradient_.stops.push_back(stop); }
+  void on_exit_element() {
+    if (!id_.empty()) state_->gradients[id_] = gradient_;
+  }
+
+ private:
+  Gradient gradient_;
+};
+
+class StopContext : public NodeContext {
+ public:
+  StopContext(GradientContext& parent, const XmlNode* node) : NodeContext(parent, node), gradient_(&parent) {}
+
+  using NodeContext::set;
+  void set(tag::attribute::stop_color, int rgb) { stop_.rgb = static_cast<std::uint32_t>(rgb); }
+  void set(tag::attribute::stop_color, int rgb, tag::skip_icc_color) { set(tag::attribute::stop_color(), rgb); }
+  void set(tag::attribute::stop_color, tag::value::currentColor) { stop_.rgb = style_.color; }
+  void set(tag::attribute::stop_opacity, double v) { stop_.opacity = std::clamp(v, 0.0, 1.0); }
+  void on_exit_element() { gradient_->addStop(stop_); }
+
+ private:
+  GradientContext* gradient_;
+  GradientStop stop_;
+};
+
+// <use>, <text>, <image>: not drawn; the artist is told.
+class UnsupportedContext : public NodeContext {
+ public:
+  UnsupportedContext(NodeContext& parent, const XmlNode* node) : NodeContext(parent, node) {}
+  void on_exit_element() {
+    if (hidden() || nonRendered_ || !style_.visible) return;
+    state_->warn(describe(), "<" + tag_ + "> is not supported; skipped (convert it to paths)");
+  }
+};
+
+}  // namespace
+}  // namespace pak
+
+// Adapters inside SVG++ (basic shapes, viewport) look the error policy up by context type
+// rather than through document_traversal's parameter: give them ours too.
+namespace svgpp::policy::error {
+template <> struct default_policy<pak::NodeContext> : pak::ErrorPolicy {};
+template <> struct default_policy<pak::ShapeContext> : pak::ErrorPolicy {};
+template <> struct default_policy<pak::GradientContext> : pak::ErrorPolicy {};
+template <> struct default_policy<pak::StopContext> : pak::ErrorPolicy {};
+template <> struct default_policy<pak::UnsupportedContext> : pak::ErrorPolicy {};
+}  // namespace svgpp::policy::error
+
+namespace pak {
+namespace {
+
+template <class Context>
+using OnStack = svgpp::factory::context::on_stack_with_xml_element<Context>;
+
+struct ContextFactories {
+  template <class ParentContext, class ElementTag, class Enable = void>
+  struct apply {
+    using type = OnStack<NodeContext>;  // svg, g, a, switch, defs
+  };
+};
+
+template <class ParentContext, class ElementTag>
+struct ContextFactories::apply<ParentContext, ElementTag,
+                               typename boost::enable_if<boost::mpl::has_key<svgpp::traits::shape_elements, ElementTag>>::type> {
+  using type = OnStack<ShapeContext>;
+};
+template <class ParentContext>
+struct ContextFactories::apply<ParentContext, tag::element::linearGradient> {
+  using type = OnStack<GradientContext>;
+};
+template <class ParentContext>
+struct ContextFactories::apply<ParentContext, tag::element::radialGradient> {
+  using type = OnStack<GradientContext>;
+};
+template <class ParentContext>
+struct ContextFactories::apply<ParentContext, tag::element::stop> {
+  using type = OnStack<StopContext>;
+};
+template <class ParentContext>
+struct ContextFactories::apply<ParentContext, tag::element::use_> {
+  using type = OnStack<UnsupportedContext>;
+};
+template <class ParentContext>
+struct ContextFactories::apply<ParentContext, tag::element::text> {
+  using type = OnStack<UnsupportedContext>;
+};
+template <class ParentContext>
+struct ContextFactories::apply<ParentContext, tag::element::image> {
+  using type = OnStack<UnsupportedContext>;
+};
+
+// Elements SVG++ walks into. Everything else (clipPath, mask, symbol, marker, pattern,
+// metadata, editor namespaces …) is skipped with its whole subtree, so it is never drawn.
+using ProcessedElements =
+    boost::mpl::set<tag::element::svg, tag::element::g, tag::element::a, tag::element::switch_,
+                    tag::element::defs, tag::element::path, tag::element::rect, tag::element::circle,
+                    tag::element::ellipse, tag::element::line, tag::element::polyline,
+                    tag::element::polygon, tag::element::linearGradient, tag::element::radialGradient,
+                    tag::element::stop, tag::element::use_, tag::element::text,
+                    tag::element::image>::type;
+
+using StyleAttributes =
+    boost::mpl::vector<tag::attribute::transform, tag::attribute::fill, tag::attribute::stroke,
+                       tag::attribute::fill_opacity, tag::attribute::stroke_opacity,
+                       tag::attribute::opacity, tag::attribute::stroke_width, tag::attribute::fill_rule,
+                       tag::attribute::display, tag::attribute::visibility, tag::attribute::color>;
+
+using StructureAttributes = boost::mpl::vector<
+    boost::mpl::pair<tag::element::svg, tag::attribute::viewBox>,
+    boost::mpl::pair<tag::element::svg, tag::attribute::width>,
+    boost::mpl::pair<tag::element::svg, tag::attribute::height>,
+    boost::mpl::pair<tag::element::svg, tag::attribute::x>,
+    boost::mpl::pair<tag::element::svg, tag::attribute::y>,
+    boost::mpl::pair<tag::element::stop, tag::attribute::stop_color>,
+    boost::mpl::pair<tag::element::stop, tag::attribute::stop_opacity>,
+    boost::mpl::pair<tag::element::linearGradient, tag::attribute::xlink::href>,
+    boost::mpl::pair<tag::element::radialGradient, tag::attribute::xlink::href>>;
+
+template <class Set, class Sequence>
+using InsertAll =
+    typename boost::mpl::fold<Sequence, Set, boost::mpl::insert<boost::mpl::_1, boost::mpl::_2>>::type;
+
+using ProcessedAttributes =
+    InsertAll<InsertAll<InsertAll<boost::mpl::set<>::type, svgpp::traits::shapes_attributes_by_element>,
+                        StyleAttributes>,
+              StructureAttributes>;
+
+using DocumentTraversal = svgpp::document_traversal<
+    svgpp::processed_elements<ProcessedElements>, svgpp::processed_attributes<ProcessedAttributes>,
+    svgpp::context_factories<ContextFactories>, svgpp::path_policy<svgpp::policy::path::minimal>,
+    svgpp::length_policy<svgpp::policy::length::forward_to_method<NodeContext>>,
+    svgpp::error_policy<ErrorPolicy>, svgpp::attribute_traversal_policy<AttributeOrder>>;
+
+// ---------------------------------------------------------------------------------------
+// Flattening. A cubic is cut into n equal parameter steps with n from Wang's bound: the
+// distance between a Bézier of degree 3 and its chords is at most
+// (3/4) · max|P_i − 2 P_{i+1} + P_{i+2}| / n², so n = ceil(sqrt(3 M / (4 tolerance))).
+void flattenCubic(Vec2 p0, Vec2 p1, Vec2 p2, Vec2 p3, double tolerance, std::vector<Vec2>& out) {
+  const double m = std::max(length(p0 - 2.0 * p1 + p2), length(p1 - 2.0 * p2 + p3));
+  int n = 1;
+  if (m > 0 && tolerance > 0)
+    n = static_cast<int>(std::ceil(std::sqrt(0.75 * m / tolerance)));
+  n = std::clamp(n, 1, kMaxSegmentsPerCubic);
+  for (int i = 1; i < n; ++i) {
+    const double t = static_cast<double>(i) / n, s = 1.0 - t;
+    out.push_back(s * s * s * p0 + 3 * s * s * t * p1 + 3 * s * t * t * p2 + t * t * t * p3);
+  }
+  out.push_back(p3);
+}
+
+Subpath flatten(const CurveSubpath& curves, double tolerance) {
+  std::vector<Vec2> points{curves.start};
+  for (const CurveSegment& segment : curves.segments) {
+    if (segment.cubic) flattenCubic(points.back(), segment.control1, segment.control2, segment.end, tolerance, points);
+    else points.push_back(segment.end);
+  }
+  Subpath subpath;
+  subpath.closed = curves.closed;
+  for (Vec2 p : points)
+    if (subpath.points.empty() || !(subpath.points.back() == p)) subpath.points.push_back(p);
+  if (subpath.closed && subpath.points.size() > 1 && subpath.points.back() == subpath.points.front())
+    subpath.points.pop_back();
+  return subpath;
+}
+
+// ---------------------------------------------------------------------------------------
+Color colorFrom(std::uint32_t rgb, double alpha) {
+  return Color{static_cast<std::uint8_t>((rgb >> 16) & 0xff), static_cast<std::uint8_t>((rgb >> 8) & 0xff),
+               static_cast<std::uint8_t>(rgb & 0xff), alpha};
+}
+
+std::optional<Color> resolveSolid(const SolidPaint& paint, std::uint32_t currentColor, double alpha) {
+  switch (paint.kind) {
+    case PaintKind::None: return std::nullopt;
+    case PaintKind::CurrentColor: return colorFrom(currentColor, alpha);
+    case PaintKind::Color: return colorFrom(paint.rgb, alpha);
+  }
+  return std::nullopt;
+}
+
+// Stops of a gradient, following xlink:href chains (Inkscape writes one gradient with the
+// stops and another that references it).
+const std::vector<GradientStop>* gradientStops(const ReaderState& state, const std::string& id) {
+  std::string current = id;
+  for (int hops = 0; hops < 16; ++hops) {
+    auto it = state.gradients.find(current);
+    if (it == state.gradients.end()) return nullptr;
+    if (!it->second.stops.empty()) return &it->second.stops;
+    if (it->second.href.empty()) return nullptr;
+    current = it->second.href;
+  }
+  return nullptr;
+}
+
+std::optional<Color> resolvePaint(ReaderState& state, const Paint& paint, std::uint32_t currentColor,
+                                  double alpha, const std::string& where) {
+  if (paint.server.empty()) return resolveSolid(paint.solid, currentColor, alpha);
+  if (const auto* stops = gradientStops(state, paint.server)) {
+    double r = 0, g = 0, b = 0, a = 0;
+    for (const GradientStop& stop : *stops) {
+      r += (stop.rgb >> 16) & 0xff;
+      g += (stop.rgb >> 8) & 0xff;
+      b += stop.rgb & 0xff;
+      a += stop.opacity;
+    }
+    const double n = static_cast<double>(stops->size());
+    state.warn(where, "gradient #" + paint.server + " drawn with the mean colour of its stops");
+    auto channel = [&](double sum) { return static_cast<std::uint8_t>(std::lround(sum / n)); };
+    return Color{channel(r), channel(g), channel(b), alpha * a / n};
+  }
+  if (paint.fallback) return resolveSolid(*paint.fallback, currentColor, alpha);
+  state.warn(where, "paint server #" + paint.server + " is missing or not supported; painted grey");
+  return colorFrom(0x808080, alpha);
+}
+
+// Every element without a namespace (a hand-written file without xmlns) or in the root's own
+// namespace (Illustrator's xmlns="&ns_svg;" entity, which XML parsers without DTD support
+// leave unexpanded) is treated as SVG, so that SVG++ walks into it.
+void adoptSvgNamespace(XmlNode* root) {
+  const std::string rootNamespace(root->namespace_uri(), root->namespace_uri_size());
+  if (rootNamespace == kSvgNamespace) return;
+  std::vector<XmlNode*> stack{root};
+  while (!stack.empty()) {
+    XmlNode* node = stack.back();
+    stack.pop_back();
+    if (node->type() != rapidxml_ns::node_element) continue;
+    const std::string_view ns(node->namespace_uri(), node->namespace_uri_size());
+    if (ns.empty() || ns == rootNamespace)
+      node->namespace_uri(kSvgNamespace.data(), kSvgNamespace.size());
+    for (XmlNode* child = node->first_node(); child; child = child->next_sibling()) stack.push_back(child);
+  }
+}
+
+std::string parseErrorPlace(const std::vector<char>& buffer, const char* where) {
+  if (!where || where < buffer.data() || where > buffer.data() + buffer.size())
+    return "";
+  const std::size_t offset = static_cast<std::size_t>(where - buffer.data());
+  int line = 1, column = 1;
+  for (std::size_t i = 0; i < offset; ++i) {
+    if (buffer[i] == '\n') { ++line; column = 1; }
+    else ++column;
+  }
+  return " at line " + std::to_string(line) + ", column " + std::to_string(column) +
+         " (byte offset " + std::to_string(offset) + ")";
+}
+
+class CurrentReaderScope {
+ public:
+  explicit CurrentReaderScope(ReaderState* state) : previous_(currentReader) { currentReader = state; }
+  ~CurrentReaderScope() { currentReader = previous_; }
+  CurrentReaderScope(const CurrentReaderScope&) = delete;
+  CurrentReaderScope& operator=(const CurrentReaderScope&) = delete;
+
+ private:
+  ReaderState* previous_;
+};
+
+}  // namespace
+
+SvgDocument readSvgString(const std::string& text, const std::string& name, const SvgReadOptions& options) {
+  SvgDocument document;
+  document.file = name;
+  if (!(options.flatness > 0) || !std::isfinite(options.flatness))
+    throw InputError(name, "flatness must be a positive number, got " + formatNumber(options.flatness));
+
+  // rapidxml parses in place and keeps pointers into the buffer: it must outlive the walk.
+  std::vector<char> buffer(text.begin(), text.end());
+  buffer.push_back('\0');
+  rapidxml_ns::xml_document<char> xml;
+  try {
+    xml.parse<rapidxml_ns::parse_default>(buffer.data());
+  } catch (const rapidxml_ns::parse_error& e) {
+    throw InputError(name, std::string("not a valid XML document: ") + e.what() +
+                               parseErrorPlace(buffer, e.where<char>()));
+  }
+  XmlNode* root = xml.first_node();
+  while (root && root->type() != rapidxml_ns::node_element) root = root->next_sibling();
+  if (!root) throw InputError(name, "not an SVG document: the XML has no root element");
+  const std::string rootName(root->local_name(), root->local_name_size());
+  if (rootName != "svg")
+    throw InputError(name, "not an SVG document: the root element is <" + rootName + ">, not <svg>");
+  adoptSvgNamespace(root);
+
+  ReaderState state;
+  state.file = name;
+  state.document = &document;
+  state.lengths.set_viewport_size(0, 0);  // no percentages until a viewBox or size is known
+  {
+    CurrentReaderScope scope(&state);
+    NodeContext rootContext(state, root);
+    try {
+      DocumentTraversal::load_document(static_cast<const XmlNode*>(root), rootContext);
+    } catch (const InputError&) {
+      throw;
+    } catch (const std::exception& e) {
+      throw InputError(name, state.currentElement + ": " + e.what());
+    }
+  }
+
+  // The document's coordinate box: viewBox, else the size, else the drawing itself.
+  Box drawingBounds;
+  for (const PendingShape& pending : state.shapes)
+    for (const CurveSubpath& subpath : pending.subpaths) {
+      drawingBounds.add(subpath.start);
+      for (const CurveSegment& segment : subpath.segments) drawingBounds.add(segment.end);
+    }
+  if (state.viewBox) {
+    document.viewBox = *state.viewBox;
+  } else if (state.width && state.height) {
+    document.viewBox.add(Vec2{0, 0});
+    document.viewBox.add(Vec2{*state.width, *state.height});
+  } else if (!drawingBounds.empty()) {
+    document.viewBox = drawingBounds;
+    document.warnings.push_back({name, "no viewBox and no width/height: using the drawing's bounds"});
+  }
+  document.width = state.width.value_or(document.viewBox.empty() ? 0.0 : document.viewBox.width());
+  document.height = state.height.value_or(document.viewBox.empty() ? 0.0 : document.viewBox.height());
+
+  double extent = document.viewBox.empty() ? 0.0 : std::max(document.viewBox.width(), document.viewBox.height());
+  if (!(extent > 0) && !drawingBounds.empty()) extent = std::max(drawingBounds.width(), drawingBounds.height());
+  const double tolerance = extent > 0 ? options.flatness * extent : options.flatness;
+
+  for (PendingShape& pending : state.shapes) {
+    Shape shape = std::move(pending.shape);
+    for (const CurveSubpath& curves : pending.subpaths) {
+      Subpath subpath = flatten(curves, tolerance);
+      if (subpath.points.size() >= 2) shape.subpaths.push_back(std::move(subpath));
+    }
+    if (shape.subpaths.empty()) {
+      state.warn(pending.description, "no drawable geometry; skipped");
+      continue;
+    }
+    shape.fill = resolvePaint(state, pending.fill, pending.color, pending.fillOpacity, pending.description);
+    shape.stroke = resolvePaint(state, pending.stroke, pending.color, pending.strokeOpacity, pending.description);
+    document.shapes.push_back(std::move(shape));
+  }
+  return document;
+}
+
+SvgDocument readSvgFile(const std::string& path, const SvgReadOptions& options) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, "cannot open the file (missing or unreadable)");
+  std::ostringstream contents;
+  contents << in.rdbuf();
+  if (in.bad()) throw InputError(path, "cannot read the file");
+  return readSvgString(contents.str(), path, options);
+}
+
+}  // namespace pak

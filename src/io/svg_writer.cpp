@@ -1,0 +1,217 @@
+// Writes a Drawing as plain SVG 1.1: one <g> per DrawingGroup, one <path> per Shape, paint as
+// presentation attributes (no CSS), so Inkscape, Illustrator, browsers and Pak's own reader
+// all see the same picture. Top-level groups are also marked as Inkscape layers.
+#include "pak/svg_writer.hpp"
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "pak/atomic_file.hpp"
+#include "pak/error.hpp"
+
+namespace pak {
+namespace {
+
+// Escapes text for a double-quoted XML attribute. Characters XML 1.0 forbids (most control
+// characters) are dropped, because no escape makes them legal.
+std::string escapeAttribute(const std::string& text) {
+  std::string out;
+  out.reserve(text.size());
+  for (char c : text) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      case '\'': out += "&apos;"; break;
+      case '\t': out += "&#9;"; break;
+      case '\n': out += "&#10;"; break;
+      case '\r': out += "&#13;"; break;
+      default:
+        if (static_cast<unsigned char>(c) >= 0x20 && c != 0x7f) out += c;
+    }
+  }
+  return out;
+}
+
+// XML names: a letter, '_' or ':' then letters, digits, '.', '-', '_', ':'. Attribute names
+// come from code, not from users, so an invalid one is a programmer mistake; we drop it rather
+// than write a file no program can open.
+bool isXmlName(const std::string& name) {
+  if (name.empty()) return false;
+  auto isStart = [](unsigned char c) { return std::isalpha(c) || c == '_' || c == ':'; };
+  auto isRest = [&](unsigned char c) { return isStart(c) || std::isdigit(c) || c == '-' || c == '.'; };
+  if (!isStart(static_cast<unsigned char>(name[0]))) return false;
+  return std::all_of(name.begin() + 1, name.end(), [&](char c) { return isRest(static_cast<unsigned char>(c)); });
+}
+
+// Fixed-point with `precision` decimals, trailing zeros trimmed, "-0" written as "0".
+std::string formatNumber(double value, int precision) {
+  if (!std::isfinite(value)) throw InputError("", "cannot write a non-finite coordinate to SVG");
+  std::array<char, 64> buffer{};
+  auto [end, error] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value,
+                                    std::chars_format::fixed, precision);
+  if (error != std::errc()) {
+    // Only astronomically large values overflow 64 characters; fall back to exponent form.
+    std::snprintf(buffer.data(), buffer.size(), "%.*g", precision + 6, value);
+    return buffer.data();
+  }
+  std::string text(buffer.data(), end);
+  if (text.find('.') != std::string::npos) {
+    while (text.back() == '0') text.pop_back();
+    if (text.back() == '.') text.pop_back();
+  }
+  if (text == "-0") text = "0";
+  return text;
+}
+
+std::string hexColor(const Color& color) {
+  std::array<char, 8> buffer{};
+  std::snprintf(buffer.data(), buffer.size(), "#%02x%02x%02x", color.r, color.g, color.b);
+  return buffer.data();
+}
+
+// Opacities with three decimals are finer than 8-bit colour; clamp to SVG's [0, 1].
+std::string formatOpacity(double opacity) { return formatNumber(std::clamp(opacity, 0.0, 1.0), 3); }
+
+std::string pathData(const Shape& shape, int precision) {
+  std::string d;
+  for (const Subpath& subpath : shape.subpaths) {
+    if (subpath.points.empty()) continue;
+    if (!d.empty()) d += ' ';
+    for (std::size_t i = 0; i < subpath.points.size(); ++i) {
+      d += i == 0 ? "M" : (i == 1 ? " L" : " ");
+      d += formatNumber(subpath.points[i].x, precision);
+      d += ',';
+      d += formatNumber(subpath.points[i].y, precision);
+    }
+    if (subpath.closed) d += " Z";
+  }
+  return d;
+}
+
+class SvgBuilder {
+ public:
+  explicit SvgBuilder(int precision) : precision_(precision) {}
+
+  void writeGroup(const DrawingGroup& group, int depth) {
+    indent(depth);
+    out_ += "<g";
+    if (!group.id.empty()) attribute("id", group.id);
+    if (!group.cssClass.empty()) attribute("class", group.cssClass);
+    if (depth == 1 && !group.id.empty()) {
+      // Top-level groups open as layers in Inkscape, named like the reader expects.
+      attribute("inkscape:groupmode", "layer");
+      attribute("inkscape:label", group.id);
+    }
+    for (const auto& [name, value] : group.attributes)
+      if (isXmlName(name)) attribute(name, value);
+    if (group.shapes.empty() && group.children.empty()) {
+      out_ += "/>\n";
+      return;
+    }
+    out_ += ">\n";
+    for (const Shape& shape : group.shapes) writeShape(shape, depth + 1);
+    for (const DrawingGroup& child : group.children) writeGroup(child, depth + 1);
+    indent(depth);
+    out_ += "</g>\n";
+  }
+
+  void writeShape(const Shape& shape, int depth) {
+    std::string d = pathData(shape, precision_);
+    if (d.empty()) return;  // nothing to draw; an empty d is an SVG error
+    indent(depth);
+    out_ += "<path";
+    if (!shape.id.empty()) attribute("id", shape.id);
+    attribute("d", d);
+    if (shape.fill) {
+      attribute("fill", hexColor(*shape.fill));
+      if (shape.fill->alpha < 1.0) attribute("fill-opacity", formatOpacity(shape.fill->alpha));
+      if (shape.fillRule == FillRule::EvenOdd) attribute("fill-rule", "evenodd");
+    } else {
+      attribute("fill", "none");
+    }
+    if (shape.stroke) {
+      attribute("stroke", hexColor(*shape.stroke));
+      if (shape.stroke->alpha < 1.0) attribute("stroke-opacity", formatOpacity(shape.stroke->alpha));
+      attribute("stroke-width", formatNumber(shape.strokeWidth, precision_));
+    }
+    if (shape.opacity < 1.0) attribute("opacity", formatOpacity(shape.opacity));
+    out_ += "/>\n";
+  }
+
+  void attribute(const std::string& name, const std::string& value) {
+    out_ += ' ';
+    out_ += name;
+    out_ += "=\"";
+    out_ += escapeAttribute(value);
+    out_ += '"';
+  }
+
+  void indent(int depth) { out_.append(static_cast<std::size_t>(depth) * 2, ' '); }
+  std::string& text() { return out_; }
+
+ private:
+  int precision_;
+  std::string out_;
+};
+
+// The drawing's box, or the bounds of what it draws when the box was left empty.
+Box drawingBox(const Drawing& drawing) {
+  if (!drawing.viewBox.empty()) return drawing.viewBox;
+  Box box;
+  auto addGroup = [&](const DrawingGroup& group, auto& self) -> void {
+    for (const Shape& shape : group.shapes)
+      for (const Subpath& subpath : shape.subpaths)
+        for (Vec2 p : subpath.points) box.add(p);
+    for (const DrawingGroup& child : group.children) self(child, self);
+  };
+  for (const DrawingGroup& group : drawing.groups) addGroup(group, addGroup);
+  if (box.empty()) return Box{{0.0, 0.0}, {1.0, 1.0}};
+  return box;
+}
+
+}  // namespace
+
+std::string toSvgString(const Drawing& drawing, const SvgWriteOptions& options) {
+  int precision = std::clamp(options.precision, 0, 12);
+  Box box = drawingBox(drawing);
+  // A degenerate box (one point, a horizontal line) would make an invalid viewBox.
+  double boxWidth = box.width() > 0.0 ? box.width() : 1.0;
+  double boxHeight = box.height() > 0.0 ? box.height() : 1.0;
+  double width = drawing.width > 0.0 ? drawing.width : boxWidth;
+  double height = drawing.height > 0.0 ? drawing.height : boxHeight;
+
+  SvgBuilder builder(precision);
+  std::string& out = builder.text();
+  out += "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"no\"?>\n";
+  out += "<svg xmlns=\"http://www.w3.org/2000/svg\"";
+  out += " xmlns:inkscape=\"http://www.inkscape.org/namespaces/inkscape\"";
+  out += " version=\"1.1\"";
+  builder.attribute("width", formatNumber(width, precision));
+  builder.attribute("height", formatNumber(height, precision));
+  builder.attribute("viewBox", formatNumber(box.min.x, precision) + " " + formatNumber(box.min.y, precision) +
+                                   " " + formatNumber(boxWidth, precision) + " " +
+                                   formatNumber(boxHeight, precision));
+  out += ">\n";
+  for (const DrawingGroup& group : drawing.groups) builder.writeGroup(group, 1);
+  out += "</svg>\n";
+  return std::move(out);
+}
+
+void writeSvgFile(const Drawing& drawing, const std::string& path, const SvgWriteOptions& options) {
+  std::string text;
+  try {
+    text = toSvgString(drawing, options);
+  } catch (const InputError& error) {
+    throw InputError(path, error.what());
+  }
+  writeFileAtomically(path, text);
+}
+
+}  // namespace pak

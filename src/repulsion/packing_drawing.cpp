@@ -1,0 +1,55 @@
+#include "pak/packing_drawing.hpp"
+
+#include <filesystem>
+
+namespace pak {
+
+namespace {
+
+Shape outlineShape(std::vector<Subpath> subpaths, Color colour, double width) {
+  Shape s;
+  s.subpaths = std::move(subpaths);
+  s.fill.reset();
+  s.stroke = colour;
+  s.strokeWidth = width;
+  return s;
+}
+
+}  // namespace
+
+Drawing packingDrawing(const Scene& scene, const Packing& packing, const PackingDrawingOptions& options) {
+  Drawing drawing;
+  drawing.viewBox = scene.viewBox.empty() ? bounds(scene.container) : scene.viewBox;
+  drawing.width = scene.width;
+  drawing.height = scene.height;
+
+  DrawingGroup container{"container", "", {}, scene.containerShapes, {}};
+  drawing.groups.push_back(std::move(container));
+  if (!scene.fixed.empty()) drawing.groups.push_back({"fixed", "", {}, scene.fixed, {}});
+
+  DrawingGroup elements{"elements", "", {}, {}, {}};
+  for (const PlacedElement& e : packing.elements) {
+    std::string name = std::filesystem::path(e.source).filename().string();
+    elements.children.push_back({"", "element", {{"data-source", name}}, e.art, {}});
+  }
+  drawing.groups.push_back(std::move(elements));
+
+  if (options.debugLayers) {
+    // Line widths relative to the canonical frame so they read at any input scale.
+    double hairline = 0.6 / packing.canonicalScale;
+    DrawingGroup skins{"skins", "", {}, {}, {}};
+    DrawingGroup meshes{"meshes", "", {}, {}, {}};
+    for (const PlacedElement& e : packing.elements) {
+      skins.shapes.push_back(outlineShape({Subpath{e.skin, true}}, Color{0, 120, 255, 0.9}, hairline));
+      std::vector<Subpath> triangles;
+      for (const auto& t : e.meshTriangles)
+        triangles.push_back({{e.meshVertices[t[0]], e.meshVertices[t[1]], e.meshVertices[t[2]]}, true});
+      meshes.shapes.push_back(outlineShape(std::move(triangles), Color{60, 60, 60, 0.6}, hairline * 0.5));
+    }
+    drawing.groups.push_back(std::move(skins));
+    drawing.groups.push_back(std::move(meshes));
+  }
+  return drawing;
+}
+
+}  // namespace pak

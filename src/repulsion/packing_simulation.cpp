@@ -1,0 +1,249 @@
+#include "packing_simulation.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "pak/forces.hpp"
+
+namespace pak {
+
+namespace {
+
+constexpr std::size_t kVertexGrain = 256;
+constexpr int kMaxNeighbours = 24;
+
+inline Vec2 closestOnSegment(Vec2 p, Vec2 a, Vec2 b, double& t) {
+  Vec2 ab = b - a;
+  double len2 = lengthSquared(ab);
+  t = len2 > 0.0 ? std::clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
+  return a + ab * t;
+}
+
+}  // namespace
+
+PackingSimulation::PackingSimulation(const RegionIndex& container, double containerArea,
+                                     const SimulationParameters& parameters, ThreadPool& pool)
+    : container_(container), containerArea_(containerArea), parameters_(parameters), pool_(pool) {}
+
+int PackingSimulation::addMesh(const ElementMesh& mesh, int type, Vec2 position, double angle, double growth,
+                               bool frozen) {
+  MeshInstance instance;
+  instance.type = type;
+  instance.vertexBegin = static_cast<int>(position_.size());
+  instance.vertexCount = static_cast<int>(mesh.mesh.vertices.size());
+  instance.boundaryCount = mesh.boundaryCount;
+  instance.segmentBegin = static_cast<int>(segmentMesh_.size());
+  instance.triangleBegin = static_cast<int>(triangles_.size());
+  instance.triangleCount = static_cast<int>(mesh.mesh.triangles.size());
+  instance.growth = growth;
+  instance.frozen = frozen;
+  int id = static_cast<int>(meshes_.size());
+  for (Vec2 v : mesh.mesh.vertices) {
+    Vec2 offset = rotated(v - mesh.restCentroid, angle);
+    position_.push_back(position + offset * growth);
+    restDirection_.push_back(offset);
+    meshOf_.push_back(id);
+  }
+  int base = instance.vertexBegin;
+  for (int k = 0; k < mesh.boundaryCount; ++k) {
+    segmentEnds_.push_back(base + k);
+    segmentEnds_.push_back(base + (k + 1) % mesh.boundaryCount);
+    segmentMesh_.push_back(id);
+  }
+  for (const auto& tri : mesh.mesh.triangles) triangles_.push_back({base + tri[0], base + tri[1], base + tri[2]});
+  for (const Spring& s : mesh.springs) {
+    pending_.ends.emplace_back(base + s.a, base + s.b);
+    pending_.rest.push_back(s.restLength);
+    pending_.stiffness.push_back(s.kind == SpringKind::NegativeSpace ? parameters_.negativeSpaceStrength
+                                                                      : parameters_.edgeStrength);
+  }
+  meshes_.push_back(instance);
+  return id;
+}
+
+void PackingSimulation::finalize(const Box& area) {
+  std::size_t n = position_.size();
+  velocity_.assign(n, {});
+  force_.assign(n, {});
+  insideOther_.assign(n, 0);
+  outsideContainer_.assign(n, 0);
+  vertexNormal_.assign(n, {});
+  segmentNormal_.assign(segmentMesh_.size(), {});
+  meshCentre_.assign(meshes_.size(), {});
+
+  // Springs by vertex: counting sort of both ends, in spring order (deterministic).
+  springStart_.assign(n + 1, 0);
+  for (auto [a, b] : pending_.ends) { ++springStart_[a + 1]; ++springStart_[b + 1]; }
+  for (std::size_t v = 0; v < n; ++v) springStart_[v + 1] += springStart_[v];
+  std::vector<int> cursor(springStart_.begin(), springStart_.end() - 1);
+  std::size_t entries = static_cast<std::size_t>(springStart_[n]);
+  springOther_.assign(entries, 0);
+  springRest_.assign(entries, 0.0);
+  springStiffness_.assign(entries, 0.0);
+  for (std::size_t s = 0; s < pending_.ends.size(); ++s) {
+    auto [a, b] = pending_.ends[s];
+    for (auto [from, to] : {std::pair{a, b}, std::pair{b, a}}) {
+      int k = cursor[from]++;
+      springOther_[k] = to;
+      springRest_[k] = pending_.rest[s];
+      springStiffness_[k] = pending_.stiffness[s];
+    }
+  }
+  pending_ = {};
+
+  triangleStart_.assign(n + 1, 0);
+  for (const auto& tri : triangles_)
+    for (int v : tri) ++triangleStart_[v + 1];
+  for (std::size_t v = 0; v < n; ++v) triangleStart_[v + 1] += triangleStart_[v];
+  cursor.assign(triangleStart_.begin(), triangleStart_.end() - 1);
+  incidentTriangle_.assign(static_cast<std::size_t>(triangleStart_[n]), 0);
+  for (std::size_t t = 0; t < triangles_.size(); ++t)
+    for (int v : triangles_[t]) incidentTriangle_[cursor[v]++] = static_cast<int>(t);
+
+  grid_.configure(area, parameters_.cellSize, segmentMesh_.size());
+  // Areas and normals for the first `fill()` and the first step.
+  grid_.rebuild(position_.data(), segmentEnds_.data(), segmentMesh_.size());
+  prepareSkins(0, meshes_.size());
+  updateMeshes(0, meshes_.size());
+  fill_ = 0.0;
+  for (const auto& m : meshes_) fill_ += m.area;
+  fill_ /= containerArea_;
+}
+
+void PackingSimulation::prepareSkins(std::size_t meshBegin, std::size_t meshEnd) {
+  for (std::size_t m = meshBegin; m < meshEnd; ++m) {
+    const MeshInstance& mesh = meshes_[m];
+    Vec2 centre;
+    for (int v = mesh.vertexBegin; v < mesh.vertexBegin + mesh.vertexCount; ++v) centre += position_[v];
+    meshCentre_[m] = centre / static_cast<double>(mesh.vertexCount);
+    int nb = mesh.boundaryCount;
+    for (int k = 0; k < nb; ++k) {
+      Vec2 a = position_[mesh.vertexBegin + k], b = position_[mesh.vertexBegin + (k + 1) % nb];
+      segmentNormal_[mesh.segmentBegin + k] = normalized(Vec2{b.y - a.y, a.x - b.x});
+    }
+    for (int k = 0; k < nb; ++k)
+      vertexNormal_[mesh.vertexBegin + k] =
+          normalized(segmentNormal_[mesh.segmentBegin + (k + nb - 1) % nb] + segmentNormal_[mesh.segmentBegin + k]);
+  }
+}
+
+void PackingSimulation::computeForces(std::size_t vertexBegin, std::size_t vertexEnd) {
+  const SimulationParameters& P = parameters_;
+  const double cutoff2 = P.cellSize * P.cellSize;
+  struct Neighbour { int mesh; double d2; Vec2 point; Vec2 normal; };
+  for (std::size_t v = vertexBegin; v < vertexEnd; ++v) {
+    const int m = meshOf_[v];
+    const MeshInstance& mesh = meshes_[m];
+    if (mesh.frozen) { force_[v] = {}; insideOther_[v] = 0; outsideContainer_[v] = 0; continue; }
+    const Vec2 x = position_[v];
+    Vec2 f;
+
+    // Closest skin point of each neighbouring mesh within the cut-off.
+    Neighbour near[kMaxNeighbours];
+    int nearCount = 0;
+    grid_.forEachNear(x, 1, [&](int s) {
+      int other = segmentMesh_[s];
+      if (other == m) return;
+      int a = segmentEnds_[2 * s], b = segmentEnds_[2 * s + 1];
+      double t;
+      Vec2 q = closestOnSegment(x, position_[a], position_[b], t);
+      double d2 = lengthSquared(x - q);
+      if (d2 > cutoff2) return;
+      int slot = 0;
+      while (slot < nearCount && near[slot].mesh != other) ++slot;
+      if (slot == nearCount) {
+        if (nearCount == kMaxNeighbours) return;
+        near[nearCount++] = {other, d2, q, {}};
+      } else if (d2 >= near[slot].d2) {
+        return;
+      }
+      near[slot].d2 = d2;
+      near[slot].point = q;
+      near[slot].normal = t <= 0.0 ? vertexNormal_[a] : (t >= 1.0 ? vertexNormal_[b] : segmentNormal_[s]);
+    });
+    bool inside = false;
+    for (int k = 0; k < nearCount && !inside; ++k) inside = dot(x - near[k].point, near[k].normal) < 0.0;
+    if (inside) {
+      // Eq. 4.4: no repulsion; every incident triangle pulls the vertex toward its centroid.
+      for (int k = triangleStart_[v]; k < triangleStart_[v + 1]; ++k) {
+        const auto& tri = triangles_[incidentTriangle_[k]];
+        Vec2 centroid = (position_[tri[0]] + position_[tri[1]] + position_[tri[2]]) / 3.0;
+        f += forces::overlap(x, centroid, P.overlapStrength);
+      }
+    } else {
+      for (int k = 0; k < nearCount; ++k) f += forces::repulsion(x, near[k].point, P.repulsionStrength, P.soft);
+    }
+    insideOther_[v] = inside ? 1 : 0;
+
+    // Eq. 4.3: springs, rest lengths scaled by the mesh's growth.
+    for (int k = springStart_[v]; k < springStart_[v + 1]; ++k)
+      f += forces::edge(x, position_[springOther_[k]], springRest_[k] * mesh.growth, springStiffness_[k]);
+
+    // Eq. 4.5: back into the container.
+    RegionIndex::Query q = container_.query(x, false);
+    if (!q.inside) {
+      if (!q.computed) q = container_.query(x, true);
+      f += forces::boundary(x, q.closest, P.boundaryStrength);
+    }
+    outsideContainer_[v] = q.inside ? 0 : 1;
+
+    // Eq. 4.6: optional preferred orientation.
+    if (P.torsionStrength > 0.0) f += forces::torsion(x, meshCentre_[m], restDirection_[v], P.torsionStrength);
+
+    force_[v] = f;
+  }
+}
+
+void PackingSimulation::integrate(std::size_t vertexBegin, std::size_t vertexEnd) {
+  const double dt = parameters_.timeStep, cap = parameters_.velocityCap;
+  for (std::size_t v = vertexBegin; v < vertexEnd; ++v) {
+    if (meshes_[meshOf_[v]].frozen) continue;
+    Vec2 vel = velocity_[v] + force_[v] * dt;
+    double speed = length(vel);
+    if (speed > cap) vel *= cap / speed;
+    velocity_[v] = vel;
+    position_[v] += vel * dt;
+  }
+}
+
+void PackingSimulation::updateMeshes(std::size_t meshBegin, std::size_t meshEnd) {
+  for (std::size_t m = meshBegin; m < meshEnd; ++m) {
+    MeshInstance& mesh = meshes_[m];
+    bool overlapping = false, outside = false;
+    for (int v = mesh.vertexBegin; v < mesh.vertexBegin + mesh.vertexCount; ++v) {
+      overlapping |= insideOther_[v] != 0;
+      outside |= outsideContainer_[v] != 0;
+    }
+    mesh.overlapping = overlapping;
+    mesh.outside = outside;
+    double twiceArea = 0.0;
+    int nb = mesh.boundaryCount;
+    for (int k = 0; k < nb; ++k) twiceArea += cross(position_[mesh.vertexBegin + k], position_[mesh.vertexBegin + (k + 1) % nb]);
+    mesh.area = 0.5 * twiceArea;
+  }
+}
+
+void PackingSimulation::step() {
+  grid_.rebuild(position_.data(), segmentEnds_.data(), segmentMesh_.size());
+  pool_.parallelFor(meshes_.size(), 4, [this](std::size_t b, std::size_t e) { prepareSkins(b, e); });
+  pool_.parallelFor(position_.size(), kVertexGrain, [this](std::size_t b, std::size_t e) { computeForces(b, e); });
+  pool_.parallelFor(position_.size(), kVertexGrain, [this](std::size_t b, std::size_t e) { integrate(b, e); });
+  // Flags come from this step's force pass; areas from the new positions.
+  updateMeshes(0, meshes_.size());
+  // Growth (4.5.1): only meshes with room, i.e. no vertex inside another mesh or outside.
+  double total = 0.0;
+  for (MeshInstance& mesh : meshes_) {
+    if (!mesh.frozen && !mesh.overlapping && !mesh.outside) mesh.growth += parameters_.growthRate * parameters_.timeStep;
+    total += mesh.area;
+  }
+  fill_ = total / containerArea_;
+  ++iteration_;
+}
+
+int PackingSimulation::growingCount() const {
+  int n = 0;
+  for (const MeshInstance& mesh : meshes_) n += (!mesh.frozen && !mesh.overlapping && !mesh.outside) ? 1 : 0;
+  return n;
+}
+
+}  // namespace pak

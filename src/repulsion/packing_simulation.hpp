@@ -1,0 +1,105 @@
+#pragma once
+// The RepulsionPak mass-spring simulation (thesis 4.5): all meshes' vertices in contiguous
+// arrays, forces computed from a frozen snapshot of positions (Jacobi) in parallel, then an
+// explicit Euler step with a velocity cap, then growth. Nothing is allocated inside `step`.
+#include <cstdint>
+#include <vector>
+
+#include "pak/element_mesh.hpp"
+#include "pak/parallel.hpp"
+#include "pak/region_index.hpp"
+#include "pak/segment_grid.hpp"
+
+namespace pak {
+
+struct SimulationParameters {
+  double repulsionStrength = 80.0;
+  double overlapStrength = 80.0;
+  double boundaryStrength = 80.0;
+  double edgeStrength = 40.0;
+  double negativeSpaceStrength = 10.0;
+  double torsionStrength = 0.0;
+  double soft = 1.0;
+  double timeStep = 0.1;
+  double velocityCap = 0.5;
+  double growthRate = 0.01;
+  double cellSize = 30.0;  // neighbour grid cell; also the repulsion cut-off distance
+};
+
+struct MeshInstance {
+  int type = 0;                 // which prepared mesh it copies
+  int vertexBegin = 0, vertexCount = 0, boundaryCount = 0;
+  int segmentBegin = 0;         // its skin segments in the global segment list
+  int triangleBegin = 0, triangleCount = 0;
+  double growth = 1.0;          // g: rest lengths are restLength × g
+  bool frozen = false;          // frozen meshes repel others but do not move or grow
+  bool overlapping = false;     // some vertex is inside another mesh
+  bool outside = false;         // some vertex is outside the container
+  double area = 0.0;            // area enclosed by its skin, updated every step
+};
+
+class PackingSimulation {
+ public:
+  PackingSimulation(const RegionIndex& container, double containerArea, const SimulationParameters& parameters,
+                    ThreadPool& pool);
+
+  // Places a copy of `mesh` scaled by `growth`, rotated by `angle` (radians) and centred at
+  // `position`. Call `finalize` after the last one.
+  int addMesh(const ElementMesh& mesh, int type, Vec2 position, double angle, double growth, bool frozen = false);
+  // Builds the adjacency tables and sizes the neighbour grid over `area`.
+  void finalize(const Box& area);
+
+  void step();
+
+  // Skin area of all meshes over the container area.
+  double fill() const { return fill_; }
+  int growingCount() const;
+  int iteration() const { return iteration_; }
+  const std::vector<MeshInstance>& meshes() const { return meshes_; }
+  std::vector<MeshInstance>& meshes() { return meshes_; }
+  const std::vector<Vec2>& positions() const { return position_; }
+  std::vector<Vec2>& positions() { return position_; }
+  const std::vector<Vec2>& velocities() const { return velocity_; }
+  const std::vector<Vec2>& forces() const { return force_; }
+  bool vertexInsideOther(int v) const { return insideOther_[v] != 0; }
+  bool vertexOutsideContainer(int v) const { return outsideContainer_[v] != 0; }
+  std::size_t springCount() const { return springOther_.size() / 2; }
+  const SimulationParameters& parameters() const { return parameters_; }
+
+ private:
+  void prepareSkins(std::size_t meshBegin, std::size_t meshEnd);
+  void computeForces(std::size_t vertexBegin, std::size_t vertexEnd);
+  void integrate(std::size_t vertexBegin, std::size_t vertexEnd);
+  void updateMeshes(std::size_t meshBegin, std::size_t meshEnd);
+
+  const RegionIndex& container_;
+  double containerArea_;
+  SimulationParameters parameters_;
+  ThreadPool& pool_;
+  int iteration_ = 0;
+  double fill_ = 0.0;
+
+  std::vector<MeshInstance> meshes_;
+  // Per vertex (hot).
+  std::vector<Vec2> position_, velocity_, force_;
+  std::vector<int> meshOf_;
+  std::vector<std::uint8_t> insideOther_, outsideContainer_;
+  std::vector<Vec2> restDirection_;  // rest offset from the mesh centre, for torsion
+  std::vector<Vec2> vertexNormal_;   // outward pseudo-normal (boundary vertices)
+  // Per vertex springs (CSR); each spring appears once at each end.
+  std::vector<int> springStart_, springOther_;
+  std::vector<double> springRest_, springStiffness_;
+  // Per vertex incident triangles (CSR) and the triangles themselves.
+  std::vector<int> triangleStart_, incidentTriangle_;
+  std::vector<std::array<int, 3>> triangles_;
+  // Skin segments: ends and owning mesh; outward normals updated every step.
+  std::vector<int> segmentEnds_, segmentMesh_;
+  std::vector<Vec2> segmentNormal_;
+  std::vector<Vec2> meshCentre_;
+  SegmentGrid grid_;
+
+  // Build-time only.
+  struct PendingSprings { std::vector<std::pair<int, int>> ends; std::vector<double> rest, stiffness; } pending_;
+};
+
+}  // namespace pak

@@ -1,0 +1,265 @@
+// packRepulsion: canonical frame, element preparation, seeding, simulation, art replay.
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "packing_simulation.hpp"
+#include "pak/clipping.hpp"
+#include "pak/error.hpp"
+#include "pak/repulsion.hpp"
+#include "seeding.hpp"
+
+namespace pak {
+
+const char* toString(StopReason reason) {
+  switch (reason) {
+    case StopReason::TargetFill: return "target-fill";
+    case StopReason::Stalled: return "stalled";
+    case StopReason::IterationCap: return "iteration-cap";
+  }
+  return "?";
+}
+
+namespace {
+
+constexpr double kCanonicalSide = 1000.0;
+
+// The container's bounding square maps to [0, 1000]²: canonical = (input - origin) * scale.
+struct CanonicalFrame {
+  Vec2 origin;
+  double scale = 1.0;
+  Vec2 toCanonical(Vec2 p) const { return (p - origin) * scale; }
+  Vec2 toInput(Vec2 p) const { return p / scale + origin; }
+};
+
+// A library element scaled into canonical units, centred on its outline's centroid.
+struct PreparedElement {
+  std::vector<Shape> art;
+  Region outline;
+  ElementMesh mesh;
+  std::string source;
+};
+
+void checkOptions(const RepulsionOptions& o) {
+  auto positive = [](double v, const char* name) {
+    if (!(v > 0.0) || !std::isfinite(v)) throw InputError("", std::string(name) + " must be a positive number");
+  };
+  positive(o.gap, "gap");
+  positive(o.elementArea, "element area");
+  positive(o.initialCoverage, "initial coverage");
+  positive(o.timeStep, "time step");
+  positive(o.velocityCap, "velocity cap");
+  positive(o.targetFill, "target fill");
+  if (o.meshSpacing < 0.0 || o.count < 0 || o.maxIterations < 0 || o.stallWindow < 1 || o.cellSize < 0.0)
+    throw InputError("", "mesh spacing, count, cell size, max iterations and stall window must not be negative");
+  if (o.count > 100000) throw InputError("", "count " + std::to_string(o.count) + " is absurdly large");
+  for (double k : {o.repulsionStrength, o.overlapStrength, o.boundaryStrength, o.edgeStrength,
+                   o.negativeSpaceStrength, o.torsionStrength, o.soft, o.growthRate, o.stallEpsilon})
+    if (!(k >= 0.0) || !std::isfinite(k)) throw InputError("", "force strengths and rates must be non-negative numbers");
+}
+
+std::vector<Shape> transformedArt(const std::vector<Shape>& art, Vec2 centre, double scale) {
+  std::vector<Shape> result = art;
+  for (Shape& shape : result) {
+    shape.strokeWidth *= scale;
+    for (Subpath& sub : shape.subpaths)
+      for (Vec2& p : sub.points) p = (p - centre) * scale;
+  }
+  return result;
+}
+
+std::vector<PreparedElement> prepareLibrary(const Library& library, double nominalSkinArea,
+                                            const RepulsionOptions& options) {
+  // One common scale keeps the library's relative sizes: chosen so that the mean skin area
+  // is the nominal one (first from art areas, then corrected once with real skins).
+  double meanArt = 0.0;
+  for (const ElementArt& e : library) {
+    double a = area(e.outline);
+    if (!(a > 0.0)) throw InputError(e.source, "element paints no area");
+    meanArt += a / library.size();
+  }
+  double scale = std::sqrt(0.75 * nominalSkinArea / meanArt);
+  double meanSkin = 0.0;
+  for (const ElementArt& e : library)
+    meanSkin += area(Region{elementSkin(transformed(e.outline, scale, -centroid(e.outline) * scale), options.gap, 0.5)}) /
+                library.size();
+  if (meanSkin > 0.0) scale *= std::sqrt(nominalSkinArea / meanSkin);
+
+  ElementMeshOptions meshOptions;
+  meshOptions.gap = options.gap;
+  meshOptions.spacing = options.meshSpacing > 0.0 ? options.meshSpacing : options.gap;
+  std::vector<PreparedElement> prepared;
+  for (std::size_t i = 0; i < library.size(); ++i) {
+    const ElementArt& e = library[i];
+    Vec2 centre = centroid(e.outline);
+    PreparedElement p;
+    p.source = e.source;
+    p.art = transformedArt(e.shapes, centre, scale);
+    p.outline = transformed(e.outline, scale, -centre * scale);
+    meshOptions.seed = options.seed * 7919 + i;
+    try {
+      p.mesh = buildElementMesh(p.art, p.outline, meshOptions);
+    } catch (const InputError& error) {
+      throw InputError(e.source, error.what());
+    }
+    prepared.push_back(std::move(p));
+  }
+  return prepared;
+}
+
+// Skins of the seeded meshes at growth g: overlap-free and inside the container?
+bool seedingIsClear(const std::vector<PreparedElement>& types, const std::vector<Seed>& seeds, double g,
+                    const RegionIndex& container) {
+  std::vector<Region> skins;
+  std::vector<Box> boxes;
+  for (const Seed& s : seeds) {
+    const ElementMesh& mesh = types[s.type].mesh;
+    Ring ring;
+    for (int k = 0; k < mesh.boundaryCount; ++k) {
+      Vec2 p = s.position + rotated(mesh.mesh.vertices[k] - mesh.restCentroid, s.angle) * g;
+      if (!container.query(p, false).inside) return false;
+      ring.push_back(p);
+    }
+    boxes.push_back(bounds(ring));
+    skins.push_back(Region{Polygon{std::move(ring), {}}});
+  }
+  for (std::size_t i = 0; i < skins.size(); ++i)
+    for (std::size_t j = i + 1; j < skins.size(); ++j)
+      if (boxes[i].overlaps(boxes[j]) && area(intersect(skins[i], skins[j])) > 0.0) return false;
+  return true;
+}
+
+Packing collectPacking(const PackingSimulation& sim, const std::vector<PreparedElement>& types,
+                       const CanonicalFrame& frame, const Region& container) {
+  Packing packing;
+  packing.container = container;
+  packing.canonicalScale = frame.scale;
+  packing.iterations = sim.iteration();
+  packing.skinFill = sim.fill();
+  packing.vertexCount = static_cast<int>(sim.positions().size());
+  packing.springCount = static_cast<int>(sim.springCount());
+  std::vector<Vec2> artPoints;
+  for (const MeshInstance& mesh : sim.meshes()) {
+    const PreparedElement& type = types[mesh.type];
+    const Vec2* vertices = sim.positions().data() + mesh.vertexBegin;
+    replayArt(type.mesh, vertices, artPoints);
+    PlacedElement placed;
+    placed.libraryIndex = mesh.type;
+    placed.source = type.source;
+    placed.growth = mesh.growth;
+    placed.art = type.art;
+    std::size_t k = 0;
+    for (Shape& shape : placed.art) {
+      shape.strokeWidth *= mesh.growth / frame.scale;
+      for (Subpath& sub : shape.subpaths)
+        for (Vec2& p : sub.points) p = frame.toInput(artPoints[k++]);
+    }
+    for (int v = 0; v < mesh.vertexCount; ++v) placed.meshVertices.push_back(frame.toInput(vertices[v]));
+    placed.skin.assign(placed.meshVertices.begin(), placed.meshVertices.begin() + mesh.boundaryCount);
+    placed.meshTriangles = type.mesh.mesh.triangles;
+    packing.elements.push_back(std::move(placed));
+  }
+  return packing;
+}
+
+}  // namespace
+
+Packing packRepulsion(const Scene& scene, const Library& library, const RepulsionOptions& options,
+                      const RepulsionCallbacks& callbacks) {
+  checkOptions(options);
+  if (library.empty()) throw InputError("", "no elements to pack");
+  Box box = bounds(scene.container);
+  double containerAreaInput = area(scene.container);
+  if (box.empty() || !(containerAreaInput > 0.0)) throw InputError(scene.source, "container has no area");
+
+  CanonicalFrame frame;
+  frame.origin = box.min;
+  frame.scale = kCanonicalSide / std::max(box.width(), box.height());
+  Region container = transformed(scene.container, frame.scale, -box.min * frame.scale);
+  normalizeOrientation(container);
+  const double containerArea = area(container);
+  const double spacing = options.meshSpacing > 0.0 ? options.meshSpacing : options.gap;
+  RegionIndex containerIndex(container, std::max(spacing, 5.0));
+
+  const int count = options.count > 0 ? options.count : std::max(1, static_cast<int>(std::lround(1.0 / options.elementArea)));
+  std::vector<PreparedElement> types = prepareLibrary(library, containerArea / count, options);
+
+  SeedingOptions seeding;
+  seeding.count = count;
+  seeding.types = static_cast<int>(types.size());
+  seeding.seed = options.seed;
+  std::vector<Seed> seeds = seedElements(container, containerIndex, seeding);
+  if (seeds.empty()) throw InputError(scene.source, "container too small to seed any element");
+
+  // Shrink everything alike until the seeded skins cover `initialCoverage` without overlap.
+  double seededSkin = 0.0;
+  for (const Seed& s : seeds) seededSkin += types[s.type].mesh.skinArea;
+  double g0 = std::sqrt(options.initialCoverage * containerArea / seededSkin);
+  for (int attempt = 0; attempt < 30 && !seedingIsClear(types, seeds, g0, containerIndex); ++attempt) g0 *= 0.9;
+
+  SimulationParameters parameters;
+  parameters.repulsionStrength = options.repulsionStrength;
+  parameters.overlapStrength = options.overlapStrength;
+  parameters.boundaryStrength = options.boundaryStrength;
+  parameters.edgeStrength = options.edgeStrength;
+  parameters.negativeSpaceStrength = options.negativeSpaceStrength;
+  parameters.torsionStrength = options.torsionStrength;
+  parameters.soft = options.soft;
+  parameters.timeStep = options.timeStep;
+  parameters.velocityCap = options.velocityCap;
+  parameters.growthRate = options.growthRate;
+  parameters.cellSize = options.cellSize > 0.0 ? options.cellSize : 3.0 * std::max(options.gap, spacing);
+
+  ThreadPool pool(options.threads);
+  PackingSimulation sim(containerIndex, containerArea, parameters, pool);
+  for (const Seed& s : seeds) sim.addMesh(types[s.type].mesh, s.type, s.position, s.angle, g0);
+  Box area = bounds(container);
+  Vec2 margin{0.1 * kCanonicalSide, 0.1 * kCanonicalSide};
+  area.add(area.min - margin);
+  area.add(area.max + margin);
+  sim.finalize(area);
+
+  // Eq. 4.7 over a window of the last w + 1 fills.
+  const int w = options.stallWindow;
+  std::vector<double> history(static_cast<std::size_t>(w) + 1, 0.0);
+  StopReason reason = StopReason::IterationCap;
+  auto report = [&] {
+    if (callbacks.onProgress)
+      callbacks.onProgress({sim.iteration(), sim.fill(), sim.growingCount(), static_cast<int>(sim.meshes().size())});
+  };
+  while (sim.iteration() < options.maxIterations) {
+    sim.step();
+    int it = sim.iteration();
+    history[static_cast<std::size_t>(it % (w + 1))] = sim.fill();
+    if (callbacks.onProgress && callbacks.progressEvery > 0 && it % callbacks.progressEvery == 0) report();
+    if (callbacks.onSnapshot && callbacks.snapshotEvery > 0 && it % callbacks.snapshotEvery == 0)
+      callbacks.onSnapshot(collectPacking(sim, types, frame, scene.container));
+    if (sim.fill() >= options.targetFill) { reason = StopReason::TargetFill; break; }
+    if (it > w) {
+      double sum = 0.0;
+      for (int i = 1; i <= w; ++i) {
+        double d = history[static_cast<std::size_t>((it - w + i) % (w + 1))] -
+                   history[static_cast<std::size_t>((it - w + i - 1) % (w + 1))];
+        sum += d * d;
+      }
+      if (std::sqrt(sum / w) < options.stallEpsilon) { reason = StopReason::Stalled; break; }
+    }
+  }
+  report();
+  Packing packing = collectPacking(sim, types, frame, scene.container);
+  packing.stopReason = reason;
+  return packing;
+}
+
+double artFill(const Packing& packing) {
+  double total = 0.0;
+  for (const PlacedElement& e : packing.elements) {
+    std::vector<Region> painted;
+    for (const Shape& s : e.art) painted.push_back(paintedRegion(s));
+    total += area(unite(painted));
+  }
+  double a = area(packing.container);
+  return a > 0.0 ? total / a : 0.0;
+}
+
+}  // namespace pak

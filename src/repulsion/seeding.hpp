@@ -1,0 +1,28 @@
+#pragma once
+// Initial placement (thesis 4.4): evenly spread seed points inside the free region,
+// element types assigned cyclically in random order with random orientations.
+#include <cstdint>
+#include <vector>
+
+#include "pak/polygon.hpp"
+#include "pak/region_index.hpp"
+
+namespace pak {
+
+struct Seed {
+  Vec2 position;
+  double angle = 0.0;  // radians
+  int type = 0;        // library index
+};
+
+struct SeedingOptions {
+  int count = 1;
+  int types = 1;
+  std::uint64_t seed = 1;
+};
+
+// `count` points spread evenly over `region` (blue-noise candidates, then farthest-point
+// selection that also keeps away from the boundary), shuffled, with types 0,1,2,… cycled.
+std::vector<Seed> seedElements(const Region& region, const RegionIndex& index, const SeedingOptions& options);
+
+}  // namespace pak

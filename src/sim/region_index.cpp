@@ -1,0 +1,125 @@
+#include "pak/region_index.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "pak/closest_point.hpp"
+
+namespace pak {
+
+namespace {
+// Outward normal of an edge of a ring whose interior lies to its left (positive signed area).
+Vec2 outwardNormal(Vec2 a, Vec2 b) { return normalized(Vec2{b.y - a.y, a.x - b.x}); }
+}  // namespace
+
+RegionIndex::RegionIndex(const Region& input, double cellSize) : cell_(cellSize) {
+  Region region = input;
+  normalizeOrientation(region);  // outer rings positive, holes negative: interior on the left
+  auto addRing = [&](const Ring& ring) {
+    std::size_t n = ring.size(), first = segments_.size();
+    if (n < 3) return;
+    for (std::size_t k = 0; k < n; ++k) {
+      Vec2 a = ring[k], b = ring[(k + 1) % n];
+      segments_.push_back({a, b, outwardNormal(a, b), {}, {}});
+    }
+    // Vertex pseudo-normals decide the side when the closest point is a vertex.
+    for (std::size_t k = 0; k < n; ++k) {
+      Segment& s = segments_[first + k];
+      const Segment& prev = segments_[first + (k + n - 1) % n];
+      const Segment& next = segments_[first + (k + 1) % n];
+      s.normalA = normalized(prev.normal + s.normal);
+      s.normalB = normalized(s.normal + next.normal);
+    }
+  };
+  Box box;
+  for (const Polygon& poly : region) {
+    addRing(poly.outer);
+    for (const Ring& h : poly.holes) addRing(h);
+    box.add(bounds(poly));
+  }
+  if (segments_.empty()) return;
+  origin_ = box.min - Vec2{cell_, cell_};
+  nx_ = static_cast<int>(std::ceil((box.width() + 2 * cell_) / cell_)) + 1;
+  ny_ = static_cast<int>(std::ceil((box.height() + 2 * cell_) / cell_)) + 1;
+  std::vector<std::vector<int>> buckets(static_cast<std::size_t>(nx_) * ny_);
+  for (std::size_t s = 0; s < segments_.size(); ++s) {
+    const Segment& seg = segments_[s];
+    // Conservative: every cell the segment's bounding box touches.
+    int i0 = static_cast<int>(std::floor((std::min(seg.a.x, seg.b.x) - origin_.x) / cell_));
+    int i1 = static_cast<int>(std::floor((std::max(seg.a.x, seg.b.x) - origin_.x) / cell_));
+    int j0 = static_cast<int>(std::floor((std::min(seg.a.y, seg.b.y) - origin_.y) / cell_));
+    int j1 = static_cast<int>(std::floor((std::max(seg.a.y, seg.b.y) - origin_.y) / cell_));
+    for (int j = std::max(0, j0); j <= std::min(ny_ - 1, j1); ++j)
+      for (int i = std::max(0, i0); i <= std::min(nx_ - 1, i1); ++i)
+        buckets[cellIndex(i, j)].push_back(static_cast<int>(s));
+  }
+  cellStart_.assign(buckets.size() + 1, 0);
+  cellState_.assign(buckets.size(), kOutside);
+  for (std::size_t c = 0; c < buckets.size(); ++c) {
+    cellStart_[c + 1] = cellStart_[c] + static_cast<int>(buckets[c].size());
+    entries_.insert(entries_.end(), buckets[c].begin(), buckets[c].end());
+    if (!buckets[c].empty()) {
+      cellState_[c] = kCrossed;
+    } else {
+      int i = static_cast<int>(c % nx_), j = static_cast<int>(c / nx_);
+      Vec2 centre = origin_ + Vec2{(i + 0.5) * cell_, (j + 0.5) * cell_};
+      cellState_[c] = pointInRegion(centre, region) ? kInside : kOutside;
+    }
+  }
+}
+
+RegionIndex::Query RegionIndex::closestAround(Vec2 p) const {
+  int ci = static_cast<int>(std::floor((p.x - origin_.x) / cell_));
+  int cj = static_cast<int>(std::floor((p.y - origin_.y) / cell_));
+  double best = std::numeric_limits<double>::infinity();
+  int bestSegment = -1;
+  double bestT = 0.0;
+  Vec2 bestPoint;
+  auto consider = [&](int s) {
+    double t;
+    Vec2 q = closestPointOnSegment(p, segments_[s].a, segments_[s].b, &t);
+    double d = lengthSquared(p - q);
+    if (d < best) { best = d; bestSegment = s; bestT = t; bestPoint = q; }
+  };
+  // Rings of cells around p; once the best distance is within the ring's inner radius, stop.
+  int maxRing = std::max(nx_, ny_) + std::max(std::abs(ci), std::abs(cj)) + 1;
+  for (int r = 0; r <= maxRing; ++r) {
+    for (int j = cj - r; j <= cj + r; ++j) {
+      if (j < 0 || j >= ny_) continue;
+      bool edgeRow = (j == cj - r || j == cj + r);
+      for (int i = ci - r; i <= ci + r; i += (edgeRow ? 1 : 2 * r)) {
+        if (i >= 0 && i < nx_) {
+          int c = cellIndex(i, j);
+          for (int k = cellStart_[c]; k < cellStart_[c + 1]; ++k) consider(entries_[k]);
+        }
+        if (r == 0) break;
+      }
+    }
+    if (bestSegment >= 0 && std::sqrt(best) <= r * cell_) break;
+  }
+  Query q;
+  if (bestSegment < 0) return q;
+  const Segment& s = segments_[bestSegment];
+  Vec2 normal = bestT <= 0.0 ? s.normalA : (bestT >= 1.0 ? s.normalB : s.normal);
+  q.closest = bestPoint;
+  q.distance = std::sqrt(best);
+  q.inside = dot(p - bestPoint, normal) < 0.0;
+  q.computed = true;
+  return q;
+}
+
+RegionIndex::Query RegionIndex::query(Vec2 p, bool wantClosest) const {
+  Query q;
+  if (segments_.empty()) return q;
+  int ci = static_cast<int>(std::floor((p.x - origin_.x) / cell_));
+  int cj = static_cast<int>(std::floor((p.y - origin_.y) / cell_));
+  bool inGrid = ci >= 0 && cj >= 0 && ci < nx_ && cj < ny_;
+  if (inGrid && cellState_[cellIndex(ci, cj)] != kCrossed && !wantClosest) {
+    q.inside = cellState_[cellIndex(ci, cj)] == kInside;
+    return q;
+  }
+  return closestAround(p);
+}
+
+}  // namespace pak

@@ -1,0 +1,52 @@
+#include "pak/segment_grid.hpp"
+
+#include <gtest/gtest.h>
+
+#include <set>
+
+using namespace pak;
+
+TEST(SegmentGrid, FindsExactlyTheSegmentsInTheWindow) {
+  std::vector<Vec2> p = {{5, 5}, {8, 5}, {55, 55}, {58, 58}, {95, 5}, {95, 15}};
+  std::vector<int> ends = {0, 1, 2, 3, 4, 5};
+  SegmentGrid grid;
+  Box area;
+  area.add({0, 0});
+  area.add({100, 100});
+  grid.configure(area, 10.0, 3);
+  grid.rebuild(p.data(), ends.data(), 3);
+  std::set<int> near;
+  grid.forEachNear({12, 12}, 1, [&](int s) { near.insert(s); });
+  EXPECT_EQ(near, std::set<int>({0}));
+  near.clear();
+  grid.forEachNear({50, 50}, 1, [&](int s) { near.insert(s); });
+  EXPECT_EQ(near, std::set<int>({1}));
+  near.clear();
+  // Segment 2 spans two cells vertically; either cell's window finds it.
+  grid.forEachNear({95, 25}, 0, [&](int s) { near.insert(s); });
+  EXPECT_TRUE(near.empty());
+  grid.forEachNear({95, 12}, 0, [&](int s) { near.insert(s); });
+  EXPECT_EQ(near, std::set<int>({2}));
+  // Points outside the area are clamped to border cells.
+  near.clear();
+  grid.forEachNear({-50, -50}, 0, [&](int s) { near.insert(s); });
+  EXPECT_EQ(near, std::set<int>({0}));
+}
+
+TEST(SegmentGrid, RebuildFollowsMovedSegments) {
+  std::vector<Vec2> p = {{5, 5}, {6, 6}};
+  std::vector<int> ends = {0, 1};
+  SegmentGrid grid;
+  Box area;
+  area.add({0, 0});
+  area.add({100, 100});
+  grid.configure(area, 10.0, 1);
+  grid.rebuild(p.data(), ends.data(), 1);
+  p = {{75, 75}, {76, 76}};
+  grid.rebuild(p.data(), ends.data(), 1);
+  int hits = 0;
+  grid.forEachNear({5, 5}, 1, [&](int) { ++hits; });
+  EXPECT_EQ(hits, 0);
+  grid.forEachNear({75, 75}, 0, [&](int) { ++hits; });
+  EXPECT_EQ(hits, 1);
+}
