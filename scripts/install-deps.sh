@@ -4,7 +4,7 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake pkg-config
+  build-essential cmake pkg-config time python3
   libpolyclipping-dev   # offsets, booleans (Clipper)
   libgeos-dev           # Delaunay triangulation (GEOS C API)
   libsvgpp-dev libboost-dev  # SVG parsing (SVG++ with rapidxml_ns)

@@ -38,7 +38,7 @@ struct IntegerOption {
 
 const NumberOption kNumberOptions[] = {
     {"gap", &RepulsionOptions::gap, "d_gap, the spacing between elements (canonical units: the container's bounding square is 1000 wide)"},
-    {"mesh-spacing", &RepulsionOptions::meshSpacing, "distance between mesh samples, canonical units (0: same as --gap)"},
+    {"mesh-spacing", &RepulsionOptions::meshSpacing, "distance between mesh samples, canonical units (0: max(gap, element size / 10))"},
     {"element-area", &RepulsionOptions::elementArea, "nominal area of one element as a fraction of the container; sets the count when --count is 0"},
     {"initial-coverage", &RepulsionOptions::initialCoverage, "fraction of the container the shrunken seeds cover at the start"},
     {"target-fill", &RepulsionOptions::targetFill, "stop when element skins cover this fraction of the container"},
@@ -51,8 +51,9 @@ const NumberOption kNumberOptions[] = {
     {"soft", &RepulsionOptions::soft, "the soft parameter of eq. 4.2"},
     {"time-step", &RepulsionOptions::timeStep, "Δt of the explicit Euler step"},
     {"velocity-cap", &RepulsionOptions::velocityCap, "largest vertex speed (canonical units per unit time)"},
+    {"damping", &RepulsionOptions::damping, "fraction of each vertex's velocity lost per step (0: none)"},
     {"growth-rate", &RepulsionOptions::growthRate, "k_g: growth factor increase per unit time while an element has room"},
-    {"cell-size", &RepulsionOptions::cellSize, "neighbour grid cell and repulsion reach, canonical units (0: 3 × gap)"},
+    {"cell-size", &RepulsionOptions::cellSize, "neighbour grid cell and repulsion reach, canonical units (0: 2 × mesh spacing)"},
     {"stall-epsilon", &RepulsionOptions::stallEpsilon, "ε of eq. 4.7: stop when the RMS fill change per iteration falls below it"},
 };
 const IntegerOption kIntegerOptions[] = {
@@ -129,7 +130,7 @@ int runPack(PackArguments& args) {
   const bool tty = isatty(STDERR_FILENO);
   RepulsionCallbacks callbacks;
   if (!args.quiet) {
-    callbacks.progressEvery = tty ? 50 : 1000;
+    callbacks.progressEvery = getenv("PAK_TRACE") ? 1 : (tty ? 50 : 1000);
     callbacks.onProgress = [&](const RepulsionProgress& p) {
       double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
       std::fprintf(stderr, "%spak pack: iteration %6d  fill %.3f  growing %3d/%d  %s%s", tty ? "\r" : "", p.iteration,
@@ -213,6 +214,7 @@ int runPack(PackArguments& args) {
     report["overlap-area"] = check.overlapArea;
     report["elements-outside"] = check.elementsOutside;
     report["outside-area"] = check.outsideArea;
+    report["problems"] = check.problems;
     report["canonical-scale"] = packing.canonicalScale;
     writeFileAtomically(args.report, report.dump(2) + "\n");
   }

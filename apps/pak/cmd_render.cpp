@@ -12,6 +12,7 @@
 #include "pak/error.hpp"
 #include "pak/png_renderer.hpp"
 #include "pak/scene_loader.hpp"
+#include "pak/svg_reader.hpp"
 #include "pak/svg_writer.hpp"
 
 namespace pak::cli {
@@ -91,7 +92,13 @@ int runRender(const RenderOptions& options) {
   std::optional<Color> background = parseBackground(options.background);
   if (options.width < 1) throw InputError("--width", "must be at least 1, got " + std::to_string(options.width));
 
-  Drawing drawing = drawingFromDocument(readDocument(options.input));
+  SvgDocument document = readDocument(options.input);
+  if (document.shapes.empty()) {
+    // An empty picture is almost always a mistake (wrong file, everything hidden); say why.
+    std::string reason = document.warnings.empty() ? "" : " (first skipped: " + document.warnings.front().message + ")";
+    throw InputError(options.input, "no usable shape to draw" + reason);
+  }
+  Drawing drawing = drawingFromDocument(document);
   if (extension == ".png") {
     writePngFile(drawing, options.output, PngOptions{.width = options.width, .background = background});
   } else {

@@ -18,27 +18,30 @@ namespace pak {
 
 struct RepulsionOptions {
   // --- elements and seeding (4.4)
-  double gap = 8.0;               // d_gap between neighbouring elements
-  double meshSpacing = 0.0;       // boundary/interior sample spacing; 0: same as gap
+  double gap = 10.0;              // d_gap between neighbouring elements
+  // Boundary/interior sample spacing; 0: max(gap, √(nominal skin area) / 10), which gives
+  // each element mesh about 100 vertices (the thesis's Table 4.1 has ~96 per element).
+  double meshSpacing = 0.0;
   int count = 0;                  // elements to seed; 0: from elementArea
   double elementArea = 1.0 / 30;  // nominal skin area of an average element / free area
   double initialCoverage = 0.08;  // skins cover this fraction of the container at the start
   // --- forces (4.5); the thesis uses 80/80/80/40/10 with Δt 0.1 on a 1000-wide container
   double repulsionStrength = 80.0;       // k_rpl
   double overlapStrength = 80.0;         // k_ovr
-  double boundaryStrength = 80.0;        // k_bdr
+  double boundaryStrength = 300.0;       // k_bdr (thesis 80; see docs/repulsionpak.md)
   double edgeStrength = 40.0;            // k_edg for edge and shear springs
   double negativeSpaceStrength = 10.0;   // k_edg for negative-space springs
   double torsionStrength = 0.0;          // k_tor (0: no preferred orientation)
   double soft = 1.0;                     // ς
   double timeStep = 0.1;                 // Δt
-  double velocityCap = 0.5;              // |v| ≤ this (thesis: 5 Δt)
+  double velocityCap = 2.0;              // |v| ≤ this (thesis: 5 Δt = 0.5; see docs/repulsionpak.md)
+  double damping = 0.2;                  // fraction of velocity lost per step (thesis: none)
   double growthRate = 0.01;              // k_g: g += k_g Δt per iteration while not overlapping
-  double cellSize = 0.0;                 // neighbour grid cell; 0: 3 × max(gap, spacing)
+  double cellSize = 0.0;                 // neighbour grid cell and repulsion reach; 0: 2 × mesh spacing
   // --- stopping (4.5.2); whichever comes first
   double targetFill = 0.80;       // skin area / container area
   int stallWindow = 100;          // w of eq. 4.7
-  double stallEpsilon = 2e-5;     // ε of eq. 4.7, in fill-ratio units per iteration
+  double stallEpsilon = 3e-5;     // ε of eq. 4.7 on the meshes' rest-area fraction, per iteration
   int maxIterations = 30000;
   // --- run
   std::uint64_t seed = 1;

@@ -34,6 +34,7 @@ struct ElementArt {
   std::vector<Shape> shapes;
   Region outline;       // union of everything the art paints (holes kept)
   std::optional<std::array<Vec2, 2>> spine;  // FLOWPAK spine if the file gives one
+  std::vector<Warning> warnings;  // the reader's and the element's: what was ignored and why
 };
 
 using Library = std::vector<ElementArt>;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "pak/closest_point.hpp"
@@ -57,7 +58,9 @@ class RegionTest {
   DistanceGrid field_;
 };
 
-// Bridson's background grid: cells of side r/sqrt(2) hold at most one sample each.
+// Bridson's background grid: cells of side r/sqrt(2) hold at most one sample each. The
+// cells store the sample's position itself (empty: +infinity) so the neighbour test reads
+// one contiguous array instead of chasing indices.
 class SampleGrid {
  public:
   SampleGrid(const Box& box, double radius) : origin_(box.min), radius_(radius) {
@@ -66,14 +69,15 @@ class SampleGrid {
     if (nx * ny > kMaxGridCells) throw InputError("", "blue-noise radius is too small for the region's size");
     nx_ = static_cast<int>(nx);
     ny_ = static_cast<int>(ny);
-    cells_.assign(static_cast<std::size_t>(nx_) * ny_, -1);
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    cells_.assign(static_cast<std::size_t>(nx_) * ny_, Vec2{inf, inf});
   }
 
   int nx() const { return nx_; }
   int ny() const { return ny_; }
   double cell() const { return cell_; }
   Vec2 origin() const { return origin_; }
-  bool occupied(int i, int j) const { return cells_[index(i, j)] >= 0; }
+  bool occupied(int i, int j) const { return std::isfinite(cells_[index(i, j)].x); }
 
   bool cellOf(Vec2 p, int& i, int& j) const {
     const double u = (p.x - origin_.x) / cell_, v = (p.y - origin_.y) / cell_;
@@ -83,18 +87,22 @@ class SampleGrid {
     return true;
   }
 
-  // True when no sample lies closer than the radius (a 5x5 block of cells covers it).
-  bool isFarFromSamples(Vec2 p, int i, int j, const std::vector<Vec2>& samples) const {
+  // True when no sample lies closer than the radius. A 5x5 block of cells covers the disc;
+  // its corner cells are at least r away, so they are skipped.
+  bool isFarFromSamples(Vec2 p, int i, int j) const {
     const double r2 = radius_ * radius_;
-    for (int jj = std::max(j - 2, 0); jj <= std::min(j + 2, ny_ - 1); ++jj)
-      for (int ii = std::max(i - 2, 0); ii <= std::min(i + 2, nx_ - 1); ++ii) {
-        const int s = cells_[index(ii, jj)];
-        if (s >= 0 && lengthSquared(samples[s] - p) < r2) return false;
-      }
+    const int j0 = std::max(j - 2, 0), j1 = std::min(j + 2, ny_ - 1);
+    for (int jj = j0; jj <= j1; ++jj) {
+      const int reach = (jj == j - 2 || jj == j + 2) ? 1 : 2;
+      const int i0 = std::max(i - reach, 0), i1 = std::min(i + reach, nx_ - 1);
+      const Vec2* row = &cells_[index(0, jj)];
+      for (int ii = i0; ii <= i1; ++ii)
+        if (lengthSquared(row[ii] - p) < r2) return false;
+    }
     return true;
   }
 
-  void insert(int i, int j, int sample) { cells_[index(i, j)] = sample; }
+  void insert(int i, int j, Vec2 p) { cells_[index(i, j)] = p; }
 
  private:
   std::size_t index(int i, int j) const { return static_cast<std::size_t>(j) * nx_ + i; }
@@ -103,7 +111,7 @@ class SampleGrid {
   double radius_;
   double cell_ = 1.0;
   int nx_ = 0, ny_ = 0;
-  std::vector<int> cells_;
+  std::vector<Vec2> cells_;
 };
 
 class BridsonSampler {
@@ -137,8 +145,8 @@ class BridsonSampler {
 
   bool tryAdd(Vec2 p) {
     int i = 0, j = 0;
-    if (!grid_.cellOf(p, i, j) || !grid_.isFarFromSamples(p, i, j, samples_) || !test_.accepts(p)) return false;
-    grid_.insert(i, j, static_cast<int>(samples_.size()));
+    if (!grid_.cellOf(p, i, j) || !grid_.isFarFromSamples(p, i, j) || !test_.accepts(p)) return false;
+    grid_.insert(i, j, p);
     samples_.push_back(p);
     active_.push_back(samples_.size() - 1);
     return true;
@@ -184,11 +192,14 @@ class BridsonSampler {
 
 std::vector<Vec2> blueNoiseSample(const Region& region, const BlueNoiseOptions& options) {
   checkOptions(options);
+  auto finite = [](const Ring& ring) {
+    return std::all_of(ring.begin(), ring.end(), [](Vec2 p) { return std::isfinite(p.x) && std::isfinite(p.y); });
+  };
+  for (const Polygon& polygon : region)
+    if (!finite(polygon.outer) || !std::all_of(polygon.holes.begin(), polygon.holes.end(), finite))
+      throw InputError("", "non-finite coordinate in the region to sample");
   const Box box = bounds(region);
   if (box.empty() || !(area(region) > 0.0)) return {};
-  if (!std::isfinite(box.width()) || !std::isfinite(box.height()))
-    throw InputError("", "non-finite coordinate in the region to sample");
-  if (!(std::max(box.width(), box.height()) > 0.0)) return {};
   return BridsonSampler(region, box, options).run();
 }
 

@@ -192,9 +192,13 @@ double DistanceGrid::sample(Vec2 p) const {
   axis((p.x - origin.x) / cell, nx, i0, tx);
   axis((p.y - origin.y) / cell, ny, j0, ty);
   const int i1 = std::min(i0 + 1, nx - 1), j1 = std::min(j0 + 1, ny - 1);
-  const double bottom = at(i0, j0) * (1.0 - tx) + at(i1, j0) * tx;
-  const double top = at(i0, j1) * (1.0 - tx) + at(i1, j1) * tx;
-  return bottom * (1.0 - ty) + top * ty;
+  // Infinite values (a field with no boundary) must not turn into inf * 0 = NaN.
+  auto lerp = [](double a, double b, double t) {
+    if (t <= 0.0 || a == b) return a;
+    if (t >= 1.0) return b;
+    return a * (1.0 - t) + b * t;
+  };
+  return lerp(lerp(at(i0, j0), at(i1, j0), tx), lerp(at(i0, j1), at(i1, j1), tx), ty);
 }
 
 DistanceGrid signedDistanceField(const Region& region, const Box& area, int resolution) {

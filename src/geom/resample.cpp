@@ -17,6 +17,11 @@ void checkLength(double length) {
   if (!std::isfinite(length)) throw InputError("", "non-finite coordinate in a resampled path");
 }
 
+// Refuses spacings so small relative to the path that the points would exhaust memory.
+void checkCount(double count) {
+  if (count > 1e8) throw InputError("", "resampling spacing is too small for the path's length");
+}
+
 // Walks a chain of vertices (closed or not) emitting the points at increasing arclengths.
 // `targets` must be sorted and within [0, total length].
 std::vector<Vec2> pointsAtArclengths(const std::vector<Vec2>& vertices, bool closed,
@@ -50,6 +55,7 @@ Ring resampleRing(const Ring& ring, double spacing) {
   checkLength(length);
   if (ring.size() < 2 || length <= 0.0) return {};
   const double count = std::max(3.0, std::round(length / spacing));
+  checkCount(count);
   const std::size_t n = static_cast<std::size_t>(count);
   std::vector<double> targets(n);
   for (std::size_t k = 0; k < n; ++k) targets[k] = length * static_cast<double>(k) / count;
@@ -65,6 +71,7 @@ Polyline resamplePolyline(const Polyline& line, double spacing) {
   // The relative slack keeps a length that is an exact multiple of the spacing from
   // gaining a segment through rounding.
   const double count = std::max(1.0, std::ceil(length / spacing * (1.0 - 1e-12)));
+  checkCount(count);
   const std::size_t n = static_cast<std::size_t>(count);
   std::vector<double> targets(n + 1);
   for (std::size_t k = 0; k <= n; ++k) targets[k] = length * static_cast<double>(k) / count;

@@ -120,6 +120,73 @@ std::vector<std::array<int, 3>> delaunayIndices(const std::vector<Vec2>& points)
   return out;
 }
 
+// pointInPolygon for many queries: the rings' edges are bucketed into horizontal bands, so
+// a query only walks the edges whose y-range meets its band. Same crossing rule and
+// per-ring parity as pointInRing, hence the same answers.
+class PolygonInsideTest {
+ public:
+  explicit PolygonInsideTest(const Polygon& polygon) {
+    addRing(polygon.outer, 0);
+    for (std::size_t h = 0; h < polygon.holes.size(); ++h) addRing(polygon.holes[h], static_cast<int>(h) + 1);
+    ringCount_ = polygon.holes.size() + 1;
+    Box box;
+    for (const Edge& e : edges_) {
+      box.add(e.a);
+      box.add(e.b);
+    }
+    if (edges_.empty() || box.empty()) return;
+    minY_ = box.min.y;
+    bandCount_ = std::max<std::size_t>(1, static_cast<std::size_t>(std::sqrt(static_cast<double>(edges_.size()))));
+    bandHeight_ = box.height() / static_cast<double>(bandCount_);
+    bands_.assign(bandCount_, {});
+    for (std::size_t k = 0; k < edges_.size(); ++k) {
+      const Edge& e = edges_[k];
+      const std::size_t lo = band(std::min(e.a.y, e.b.y)), hi = band(std::max(e.a.y, e.b.y));
+      for (std::size_t b = lo; b <= hi; ++b) bands_[b].push_back(static_cast<int>(k));
+    }
+  }
+
+  bool contains(Vec2 p) {
+    if (bands_.empty() || !(p.y >= minY_) || !(p.y <= minY_ + bandHeight_ * bandCount_)) return false;
+    parity_.assign(ringCount_, false);
+    for (int k : bands_[band(p.y)]) {
+      const Edge& e = edges_[k];
+      if ((e.a.y > p.y) != (e.b.y > p.y)) {
+        const double x = e.a.x + (p.y - e.a.y) * (e.b.x - e.a.x) / (e.b.y - e.a.y);
+        if (p.x < x) parity_[e.ring] = !parity_[e.ring];
+      }
+    }
+    if (!parity_[0]) return false;
+    for (std::size_t r = 1; r < ringCount_; ++r)
+      if (parity_[r]) return false;
+    return true;
+  }
+
+ private:
+  struct Edge {
+    Vec2 a, b;  // pointInRing's (vertex, previous vertex) order
+    int ring;
+  };
+
+  void addRing(const Ring& ring, int id) {
+    const std::size_t n = ring.size();
+    if (n < 3) return;
+    for (std::size_t i = 0, j = n - 1; i < n; j = i++) edges_.push_back({ring[i], ring[j], id});
+  }
+
+  std::size_t band(double y) const {
+    if (!(bandHeight_ > 0.0)) return 0;
+    const double u = (y - minY_) / bandHeight_;
+    return std::min(bandCount_ - 1, static_cast<std::size_t>(std::max(u, 0.0)));
+  }
+
+  std::vector<Edge> edges_;
+  std::vector<std::vector<int>> bands_;
+  std::vector<bool> parity_;
+  std::size_t ringCount_ = 0, bandCount_ = 0;
+  double minY_ = 0.0, bandHeight_ = 0.0;
+};
+
 }  // namespace
 
 TriMesh triangulatePolygon(const Polygon& polygon, const std::vector<Vec2>& interiorPoints) {
@@ -129,9 +196,10 @@ TriMesh triangulatePolygon(const Polygon& polygon, const std::vector<Vec2>& inte
   points.insert(points.end(), interiorPoints.begin(), interiorPoints.end());
 
   std::vector<std::array<int, 3>> kept;
+  PolygonInsideTest inside(polygon);
   for (const std::array<int, 3>& tri : delaunayIndices(points)) {
     const Vec2 c = (points[tri[0]] + points[tri[1]] + points[tri[2]]) / 3.0;
-    if (pointInPolygon(c, polygon)) kept.push_back(tri);
+    if (inside.contains(c)) kept.push_back(tri);
   }
 
   // Renumber the used vertices, keeping their input order (so the outer ring stays first).

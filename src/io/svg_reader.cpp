@@ -16,6 +16,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <optional>
@@ -805,12 +806,18 @@ Subpath flatten(const CurveSubpath& curves, double tolerance) {
     if (segment.cubic) flattenCubic(points.back(), segment.control1, segment.control2, segment.end, tolerance, points);
     else points.push_back(segment.end);
   }
+  // Points closer than this are one point (arcs converted to cubics end a rounding error
+  // away from where they should).
+  const double samePoint = 1e-3 * tolerance;
   Subpath subpath;
   subpath.closed = curves.closed;
   for (Vec2 p : points)
-    if (subpath.points.empty() || !(subpath.points.back() == p)) subpath.points.push_back(p);
-  if (subpath.closed && subpath.points.size() > 1 && subpath.points.back() == subpath.points.front())
-    subpath.points.pop_back();
+    if (subpath.points.empty() || distance(subpath.points.back(), p) > samePoint) subpath.points.push_back(p);
+  // A subpath that ends where it started encloses the same area with or without its "Z"
+  // (MDI icons often omit it): treat it as closed.
+  auto endsAtStart = [&] { return distance(subpath.points.back(), subpath.points.front()) <= samePoint; };
+  if (!subpath.closed && subpath.points.size() > 3 && endsAtStart()) subpath.closed = true;
+  if (subpath.closed && subpath.points.size() > 1 && endsAtStart()) subpath.points.pop_back();
   return subpath;
 }
 
@@ -989,6 +996,8 @@ SvgDocument readSvgString(const std::string& text, const std::string& name, cons
 }
 
 SvgDocument readSvgFile(const std::string& path, const SvgReadOptions& options) {
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) throw InputError(path, "is a folder, not a file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, "cannot open the file (missing or unreadable)");
   std::ostringstream contents;

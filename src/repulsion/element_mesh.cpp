@@ -1,6 +1,7 @@
 #include "pak/element_mesh.hpp"
 
 #include <algorithm>
+#include <functional>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -38,6 +39,48 @@ Polygon elementSkin(const Region& outline, double gap, double arcTolerance) {
 
 namespace {
 
+// Uniform samples along the skin every `spacing`, plus the skin vertex farthest inside any
+// chord that cuts more than `tolerance` into the skin (recursively), so that sharp tips such
+// as ears and tails stay inside the mesh instead of hanging outside it.
+Ring sampleSkinBoundary(const Ring& skin, double spacing, double tolerance) {
+  const std::size_t n = skin.size();
+  std::vector<double> along(n + 1, 0.0);  // arclength at each skin vertex (and the closing one)
+  for (std::size_t j = 0; j < n; ++j) along[j + 1] = along[j] + distance(skin[j], skin[(j + 1) % n]);
+  const double total = along[n];
+  const std::size_t count = std::max<std::size_t>(3, static_cast<std::size_t>(std::lround(total / spacing)));
+  std::vector<double> stops;  // arclengths of the samples
+  for (std::size_t k = 0; k < count; ++k) stops.push_back(total * static_cast<double>(k) / count);
+  auto at = [&](double s) { return pointAtArclength(skin, s); };
+  Ring result;
+  for (std::size_t k = 0; k < count; ++k) {
+    // Refine [stops[k], next) by splitting at the deepest skin vertex while it is too deep.
+    double end = k + 1 < count ? stops[k + 1] : total;
+    std::vector<double> pieces;
+    std::function<void(double, double)> refine = [&](double s0, double s1) {
+      Vec2 a = at(s0), b = at(s1);
+      Vec2 chord = b - a;
+      double len = length(chord);
+      double deepest = tolerance;
+      double split = -1.0;
+      for (std::size_t j = 0; j < n; ++j) {
+        if (!(along[j] > s0 && along[j] < s1)) continue;
+        // Skin is positively oriented, so its outside is to the right of the chord.
+        double depth = len > 0.0 ? cross(chord, a - skin[j]) / len : distance(a, skin[j]);
+        if (depth > deepest) { deepest = depth; split = along[j]; }
+      }
+      if (split < 0.0) return;
+      refine(s0, split);
+      pieces.push_back(split);
+      refine(split, s1);
+    };
+    pieces.push_back(stops[k]);
+    refine(stops[k], end);
+    std::sort(pieces.begin(), pieces.end());
+    for (double s : pieces) result.push_back(at(s));
+  }
+  return result;
+}
+
 std::pair<int, int> edgeKey(int a, int b) { return a < b ? std::pair{a, b} : std::pair{b, a}; }
 
 // Index of the triangle containing p, else of the triangle nearest to p.
@@ -72,8 +115,9 @@ ElementMesh buildElementMesh(const std::vector<Shape>& art, const Region& outlin
                              const ElementMeshOptions& options) {
   Polygon skin = elementSkin(outline, options.gap, options.arcTolerance);
   if (skin.outer.size() < 3) throw InputError("", "element has no area to mesh");
-  Ring boundary = resampleRing(skin.outer, options.spacing);
-  if (signedArea(boundary) < 0) std::reverse(boundary.begin(), boundary.end());
+  Ring skinRing = skin.outer;
+  if (signedArea(skinRing) < 0) std::reverse(skinRing.begin(), skinRing.end());
+  Ring boundary = sampleSkinBoundary(skinRing, options.spacing, options.gap / 4.0);
   Polygon meshPolygon{boundary, {}};
 
   BlueNoiseOptions noise;
@@ -105,8 +149,8 @@ ElementMesh buildElementMesh(const std::vector<Shape>& art, const Region& outlin
   for (const auto& tri : triangulated.triangles)
     result.mesh.triangles.push_back({newIndex[tri[0]], newIndex[tri[1]], newIndex[tri[2]]});
 
-  Ring skinRing(result.mesh.vertices.begin(), result.mesh.vertices.begin() + result.boundaryCount);
-  result.skinArea = signedArea(skinRing);
+  Ring meshRing(result.mesh.vertices.begin(), result.mesh.vertices.begin() + result.boundaryCount);
+  result.skinArea = signedArea(meshRing);
   result.artArea = area(outline);
   for (Vec2 v : result.mesh.vertices) result.restCentroid += v;
   result.restCentroid = result.restCentroid / static_cast<double>(result.mesh.vertices.size());
@@ -130,7 +174,7 @@ ElementMesh buildElementMesh(const std::vector<Shape>& art, const Region& outlin
   TriMesh hull = delaunayTriangulation(V);
   for (const auto& tri : hull.triangles) {
     Vec2 c = (hull.vertices[tri[0]] + hull.vertices[tri[1]] + hull.vertices[tri[2]]) / 3.0;
-    if (pointInRing(c, skinRing)) continue;
+    if (pointInRing(c, meshRing)) continue;
     for (int k = 0; k < 3; ++k) addSpring(tri[k], tri[(k + 1) % 3], SpringKind::NegativeSpace);
   }
 

@@ -37,6 +37,7 @@ int PackingSimulation::addMesh(const ElementMesh& mesh, int type, Vec2 position,
   instance.triangleCount = static_cast<int>(mesh.mesh.triangles.size());
   instance.growth = growth;
   instance.frozen = frozen;
+  instance.restArea = mesh.skinArea;
   int id = static_cast<int>(meshes_.size());
   for (Vec2 v : mesh.mesh.vertices) {
     Vec2 offset = rotated(v - mesh.restCentroid, angle);
@@ -105,9 +106,13 @@ void PackingSimulation::finalize(const Box& area) {
   grid_.rebuild(position_.data(), segmentEnds_.data(), segmentMesh_.size());
   prepareSkins(0, meshes_.size());
   updateMeshes(0, meshes_.size());
-  fill_ = 0.0;
-  for (const auto& m : meshes_) fill_ += m.area;
+  fill_ = restFill_ = 0.0;
+  for (const auto& m : meshes_) {
+    fill_ += m.area;
+    restFill_ += m.restArea * m.growth * m.growth;
+  }
   fill_ /= containerArea_;
+  restFill_ /= containerArea_;
 }
 
 void PackingSimulation::prepareSkins(std::size_t meshBegin, std::size_t meshEnd) {
@@ -185,7 +190,8 @@ void PackingSimulation::computeForces(std::size_t vertexBegin, std::size_t verte
       if (!q.computed) q = container_.query(x, true);
       f += forces::boundary(x, q.closest, P.boundaryStrength);
     }
-    outsideContainer_[v] = q.inside ? 0 : 1;
+    // Outside by more than the tolerance: no room to grow (see updateMeshes).
+    outsideContainer_[v] = (!q.inside && q.distance > P.outsideTolerance) ? 1 : 0;
 
     // Eq. 4.6: optional preferred orientation.
     if (P.torsionStrength > 0.0) f += forces::torsion(x, meshCentre_[m], restDirection_[v], P.torsionStrength);
@@ -196,9 +202,10 @@ void PackingSimulation::computeForces(std::size_t vertexBegin, std::size_t verte
 
 void PackingSimulation::integrate(std::size_t vertexBegin, std::size_t vertexEnd) {
   const double dt = parameters_.timeStep, cap = parameters_.velocityCap;
+  const double keep = 1.0 - parameters_.damping;
   for (std::size_t v = vertexBegin; v < vertexEnd; ++v) {
     if (meshes_[meshOf_[v]].frozen) continue;
-    Vec2 vel = velocity_[v] + force_[v] * dt;
+    Vec2 vel = velocity_[v] * keep + force_[v] * dt;
     double speed = length(vel);
     if (speed > cap) vel *= cap / speed;
     velocity_[v] = vel;
@@ -230,19 +237,23 @@ void PackingSimulation::step() {
   pool_.parallelFor(position_.size(), kVertexGrain, [this](std::size_t b, std::size_t e) { integrate(b, e); });
   // Flags come from this step's force pass; areas from the new positions.
   updateMeshes(0, meshes_.size());
-  // Growth (4.5.1): only meshes with room, i.e. no vertex inside another mesh or outside.
-  double total = 0.0;
+  // Growth (4.5.1): only meshes with room, i.e. no vertex inside another mesh (thesis) and
+  // none pushed out of the container beyond the tolerance (else a mesh squeezed against the
+  // wall keeps growing until its art crosses it).
+  double total = 0.0, rest = 0.0;
   for (MeshInstance& mesh : meshes_) {
-    if (!mesh.frozen && !mesh.overlapping && !mesh.outside) mesh.growth += parameters_.growthRate * parameters_.timeStep;
+    if (canGrow(mesh)) mesh.growth += parameters_.growthRate * parameters_.timeStep;
     total += mesh.area;
+    rest += mesh.restArea * mesh.growth * mesh.growth;
   }
   fill_ = total / containerArea_;
+  restFill_ = rest / containerArea_;
   ++iteration_;
 }
 
 int PackingSimulation::growingCount() const {
   int n = 0;
-  for (const MeshInstance& mesh : meshes_) n += (!mesh.frozen && !mesh.overlapping && !mesh.outside) ? 1 : 0;
+  for (const MeshInstance& mesh : meshes_) n += canGrow(mesh) ? 1 : 0;
   return n;
 }
 

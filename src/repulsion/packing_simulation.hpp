@@ -22,8 +22,10 @@ struct SimulationParameters {
   double soft = 1.0;
   double timeStep = 0.1;
   double velocityCap = 0.5;
+  double damping = 0.0;     // fraction of velocity lost per step (0: none, as in the thesis)
   double growthRate = 0.01;
   double cellSize = 30.0;  // neighbour grid cell; also the repulsion cut-off distance
+  double outsideTolerance = 2.0;  // a vertex further outside the container blocks growth
 };
 
 struct MeshInstance {
@@ -36,6 +38,7 @@ struct MeshInstance {
   bool overlapping = false;     // some vertex is inside another mesh
   bool outside = false;         // some vertex is outside the container
   double area = 0.0;            // area enclosed by its skin, updated every step
+  double restArea = 0.0;        // skin area at growth 1
 };
 
 class PackingSimulation {
@@ -53,6 +56,9 @@ class PackingSimulation {
 
   // Skin area of all meshes over the container area.
   double fill() const { return fill_; }
+  // Rest area of all meshes (skin area at rest × g²) over the container area: changes only
+  // through growth, so it measures progress without the jitter of the vertices.
+  double restFill() const { return restFill_; }
   int growingCount() const;
   int iteration() const { return iteration_; }
   const std::vector<MeshInstance>& meshes() const { return meshes_; }
@@ -61,6 +67,7 @@ class PackingSimulation {
   std::vector<Vec2>& positions() { return position_; }
   const std::vector<Vec2>& velocities() const { return velocity_; }
   const std::vector<Vec2>& forces() const { return force_; }
+  static bool canGrow(const MeshInstance& m) { return !m.frozen && !m.overlapping && !m.outside; }
   bool vertexInsideOther(int v) const { return insideOther_[v] != 0; }
   bool vertexOutsideContainer(int v) const { return outsideContainer_[v] != 0; }
   std::size_t springCount() const { return springOther_.size() / 2; }
@@ -78,6 +85,7 @@ class PackingSimulation {
   ThreadPool& pool_;
   int iteration_ = 0;
   double fill_ = 0.0;
+  double restFill_ = 0.0;
 
   std::vector<MeshInstance> meshes_;
   // Per vertex (hot).

@@ -50,6 +50,7 @@ void checkOptions(const RepulsionOptions& o) {
   positive(o.timeStep, "time step");
   positive(o.velocityCap, "velocity cap");
   positive(o.targetFill, "target fill");
+  if (!(o.damping >= 0.0 && o.damping < 1.0)) throw InputError("", "damping must be in [0, 1)");
   if (o.meshSpacing < 0.0 || o.count < 0 || o.maxIterations < 0 || o.stallWindow < 1 || o.cellSize < 0.0)
     throw InputError("", "mesh spacing, count, cell size, max iterations and stall window must not be negative");
   if (o.count > 100000) throw InputError("", "count " + std::to_string(o.count) + " is absurdly large");
@@ -68,7 +69,7 @@ std::vector<Shape> transformedArt(const std::vector<Shape>& art, Vec2 centre, do
   return result;
 }
 
-std::vector<PreparedElement> prepareLibrary(const Library& library, double nominalSkinArea,
+std::vector<PreparedElement> prepareLibrary(const Library& library, double nominalSkinArea, double spacing,
                                             const RepulsionOptions& options) {
   // One common scale keeps the library's relative sizes: chosen so that the mean skin area
   // is the nominal one (first from art areas, then corrected once with real skins).
@@ -87,7 +88,7 @@ std::vector<PreparedElement> prepareLibrary(const Library& library, double nomin
 
   ElementMeshOptions meshOptions;
   meshOptions.gap = options.gap;
-  meshOptions.spacing = options.meshSpacing > 0.0 ? options.meshSpacing : options.gap;
+  meshOptions.spacing = spacing;
   std::vector<PreparedElement> prepared;
   for (std::size_t i = 0; i < library.size(); ++i) {
     const ElementArt& e = library[i];
@@ -150,6 +151,7 @@ Packing collectPacking(const PackingSimulation& sim, const std::vector<PreparedE
     placed.art = type.art;
     std::size_t k = 0;
     for (Shape& shape : placed.art) {
+      shape.id.clear();  // copies of one element must not repeat its SVG ids
       shape.strokeWidth *= mesh.growth / frame.scale;
       for (Subpath& sub : shape.subpaths)
         for (Vec2& p : sub.points) p = frame.toInput(artPoints[k++]);
@@ -178,11 +180,12 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Repulsio
   Region container = transformed(scene.container, frame.scale, -box.min * frame.scale);
   normalizeOrientation(container);
   const double containerArea = area(container);
-  const double spacing = options.meshSpacing > 0.0 ? options.meshSpacing : options.gap;
-  RegionIndex containerIndex(container, std::max(spacing, 5.0));
-
   const int count = options.count > 0 ? options.count : std::max(1, static_cast<int>(std::lround(1.0 / options.elementArea)));
-  std::vector<PreparedElement> types = prepareLibrary(library, containerArea / count, options);
+  const double nominalSkinArea = containerArea / count;
+  const double spacing = options.meshSpacing > 0.0 ? options.meshSpacing
+                                                   : std::max(options.gap, std::sqrt(nominalSkinArea) / 10.0);
+  RegionIndex containerIndex(container, std::max(spacing, 5.0));
+  std::vector<PreparedElement> types = prepareLibrary(library, nominalSkinArea, spacing, options);
 
   SeedingOptions seeding;
   seeding.count = count;
@@ -207,8 +210,11 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Repulsio
   parameters.soft = options.soft;
   parameters.timeStep = options.timeStep;
   parameters.velocityCap = options.velocityCap;
+  parameters.damping = options.damping;
   parameters.growthRate = options.growthRate;
-  parameters.cellSize = options.cellSize > 0.0 ? options.cellSize : 3.0 * std::max(options.gap, spacing);
+  // A mesh pressed out of the container by more than this stops growing (see step()).
+  parameters.outsideTolerance = 0.05 * options.gap;
+  parameters.cellSize = options.cellSize > 0.0 ? options.cellSize : 2.0 * spacing;
 
   ThreadPool pool(options.threads);
   PackingSimulation sim(containerIndex, containerArea, parameters, pool);
@@ -219,7 +225,8 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Repulsio
   area.add(area.max + margin);
   sim.finalize(area);
 
-  // Eq. 4.7 over a window of the last w + 1 fills.
+  // Eq. 4.7 over a window of the last w + 1 area fractions. The fraction is the meshes' rest
+  // area (see restFill): the measured skin area jitters by more than ε from step to step.
   const int w = options.stallWindow;
   std::vector<double> history(static_cast<std::size_t>(w) + 1, 0.0);
   StopReason reason = StopReason::IterationCap;
@@ -230,7 +237,7 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Repulsio
   while (sim.iteration() < options.maxIterations) {
     sim.step();
     int it = sim.iteration();
-    history[static_cast<std::size_t>(it % (w + 1))] = sim.fill();
+    history[static_cast<std::size_t>(it % (w + 1))] = sim.restFill();
     if (callbacks.onProgress && callbacks.progressEvery > 0 && it % callbacks.progressEvery == 0) report();
     if (callbacks.onSnapshot && callbacks.snapshotEvery > 0 && it % callbacks.snapshotEvery == 0)
       callbacks.onSnapshot(collectPacking(sim, types, frame, scene.container));

@@ -84,7 +84,7 @@ TEST(DistanceField, ManySegmentsMatchBruteForce) {
   EXPECT_EQ(g.nx, 150);
   EXPECT_EQ(g.ny, 135);
   for (int j = 0; j < g.ny; ++j)
-    for (int i = 0; i < g.nx; ++i) ASSERT_EQ(g.at(i, j), bruteForce(g.center(i, j), region)) << i << "," << j;
+    for (int i = 0; i < g.nx; ++i) ASSERT_NEAR(g.at(i, j), bruteForce(g.center(i, j), region), 1e-12) << i << "," << j;
 }
 
 TEST(DistanceField, HoleIsOutside) {
@@ -165,4 +165,10 @@ TEST(DistanceField, EdtEdgeCases) {
   // One row: occupied only at the ends.
   std::vector<double> row = euclideanDistanceTransform({1, 0, 0, 0, 0, 1}, 6, 1);
   EXPECT_EQ(row, (std::vector<double>{0, 1, 2, 2, 1, 0}));
+}
+
+TEST(DistanceField, SampleOfAFieldWithoutBoundaryIsInfinite) {
+  DistanceGrid g = signedDistanceField(Region{}, box(0, 0, 4, 4), 4);
+  EXPECT_TRUE(std::isinf(g.sample({1.0, 1.0})));
+  EXPECT_TRUE(std::isinf(g.sample({0.5, 0.5})));
 }

@@ -94,6 +94,7 @@ TEST(Resample, DegenerateAndBadInput) {
   EXPECT_EQ(pointAtArclength(Ring{}, 3.0), (Vec2{}));
   EXPECT_THROW(resampleRing(square(1), 0.0), InputError);
   EXPECT_THROW(resampleRing(square(1), -1.0), InputError);
+  EXPECT_THROW(resampleRing(square(1e6), 1e-9), InputError);  // far too many points
   EXPECT_THROW(resamplePolyline({{0, 0}, {1, 0}}, std::numeric_limits<double>::quiet_NaN()), InputError);
   EXPECT_THROW(resampleRing(Ring{{0, 0}, {std::numeric_limits<double>::infinity(), 0}, {0, 1}}, 1.0), InputError);
 }

@@ -1,4 +1,4 @@
-#include "packing_simulation.hpp"
+#include "repulsion/packing_simulation.hpp"
 
 #include <gtest/gtest.h>
 
@@ -23,8 +23,8 @@ Region box(double size) { return {Polygon{{{0, 0}, {size, 0}, {size, size}, {0, 
 
 Box area(double size) {
   Box b;
-  b.add({-size * 0.2, -size * 0.2});
-  b.add({size * 1.2, size * 1.2});
+  b.add(Vec2{-size * 0.2, -size * 0.2});
+  b.add(Vec2{size * 1.2, size * 1.2});
   return b;
 }
 

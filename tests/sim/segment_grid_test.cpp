@@ -11,8 +11,8 @@ TEST(SegmentGrid, FindsExactlyTheSegmentsInTheWindow) {
   std::vector<int> ends = {0, 1, 2, 3, 4, 5};
   SegmentGrid grid;
   Box area;
-  area.add({0, 0});
-  area.add({100, 100});
+  area.add(Vec2{0, 0});
+  area.add(Vec2{100, 100});
   grid.configure(area, 10.0, 3);
   grid.rebuild(p.data(), ends.data(), 3);
   std::set<int> near;
@@ -38,8 +38,8 @@ TEST(SegmentGrid, RebuildFollowsMovedSegments) {
   std::vector<int> ends = {0, 1};
   SegmentGrid grid;
   Box area;
-  area.add({0, 0});
-  area.add({100, 100});
+  area.add(Vec2{0, 0});
+  area.add(Vec2{100, 100});
   grid.configure(area, 10.0, 1);
   grid.rebuild(p.data(), ends.data(), 1);
   p = {{75, 75}, {76, 76}};

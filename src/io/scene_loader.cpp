@@ -1,0 +1,266 @@
+// Interprets read documents as scenes and element libraries, following the input
+// conventions of DESIGN.md: layers `container`, `fixed`, `guides`, `spines` (and `holes`
+// for legacy .path files); everything else in an element file is the element's art.
+#include "pak/scene_loader.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "pak/error.hpp"
+#include "pak/path_reader.hpp"
+
+namespace pak {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string lowerCased(std::string text) {
+  for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return text;
+}
+
+std::string extensionOf(const std::string& path) { return lowerCased(fs::path(path).extension().string()); }
+
+bool isSceneLayer(const std::string& layer) {
+  return layer == "container" || layer == "fixed" || layer == "guides" || layer == "spines";
+}
+
+// Layers that never hold container or element art.
+bool isHelperLayer(const std::string& layer) {
+  return layer == "fixed" || layer == "guides" || layer == "spines" || layer == "holes" || layer == "elements";
+}
+
+// How a shape is named in messages: its id, else its tag and position.
+std::string shapeName(const Shape& shape, std::size_t index) {
+  if (!shape.id.empty()) return shape.id;
+  return shape.tag + " #" + std::to_string(index + 1);
+}
+
+// Grid of the boolean operations: fine relative to the document, so that icons drawn in a
+// 24 × 24 box and posters in millimetres are resolved alike.
+ClipOptions clipOptionsFor(const Box& box) {
+  ClipOptions options;
+  const double extent = box.empty() ? 0.0 : std::max(box.width(), box.height());
+  if (extent > 0) options.precision = std::min(options.precision, extent * 1e-7);
+  return options;
+}
+
+// A subpath that returns to its start (within a hair of the document) encloses a region
+// even without an explicit close.
+bool isEffectivelyClosed(const Subpath& subpath, double epsilon) {
+  if (subpath.closed) return true;
+  return subpath.points.size() >= 3 && distance(subpath.points.front(), subpath.points.back()) <= epsilon;
+}
+
+// The region a closed shape encloses, whatever its paint (a container drawn as an outline
+// with fill="none" is still a container).
+Region enclosedRegion(const Shape& shape, const std::string& file, std::size_t index, double epsilon,
+                      const ClipOptions& clip) {
+  std::vector<Ring> rings;
+  for (const Subpath& subpath : shape.subpaths) {
+    if (subpath.points.size() < 2) continue;
+    if (!isEffectivelyClosed(subpath, epsilon))
+      throw InputError(file, "container path '" + shapeName(shape, index) +
+                                 "' is not closed (end it with Z, or close it in your editor)");
+    if (subpath.points.size() >= 3) rings.push_back(subpath.points);
+  }
+  if (rings.empty()) return {};
+  return regionFromRings(rings, shape.fillRule, clip);
+}
+
+Polyline polylineOf(const Subpath& subpath) {
+  Polyline line = subpath.points;
+  if (subpath.closed && line.size() > 2) line.push_back(line.front());
+  return line;
+}
+
+std::string stemOf(const std::string& file) { return fs::path(file).stem().string(); }
+
+}  // namespace
+
+SvgDocument readDocument(const std::string& path, const SvgReadOptions& options) {
+  const std::string extension = extensionOf(path);
+  if (extension == ".svg") return readSvgFile(path, options);
+  if (extension == ".path") return readPathFile(path);
+  std::error_code error;
+  if (!fs::exists(path, error)) throw InputError(path, "no such file");
+  throw InputError(path, "unknown file type '" + extension + "' (Pak reads .svg and .path files)");
+}
+
+Scene sceneFromDocument(const SvgDocument& document) {
+  Scene scene;
+  scene.source = document.file;
+  scene.viewBox = document.viewBox;
+  scene.width = document.width;
+  scene.height = document.height;
+  scene.warnings = document.warnings;
+
+  const Box box = document.viewBox.empty() ? bounds(document.shapes) : document.viewBox;
+  const ClipOptions clip = clipOptionsFor(box);
+  const double closeEpsilon = std::max(clip.precision, 1e-9 * std::max(box.width(), box.height()));
+
+  const bool hasContainerLayer = std::any_of(document.shapes.begin(), document.shapes.end(),
+                                             [](const Shape& s) { return s.layer == "container"; });
+  std::vector<Region> containerRegions, holeRegions;
+  for (std::size_t i = 0; i < document.shapes.size(); ++i) {
+    const Shape& shape = document.shapes[i];
+    if (shape.layer == "fixed") {
+      scene.fixed.push_back(shape);
+    } else if (shape.layer == "guides" || shape.layer == "spines") {
+      for (const Subpath& subpath : shape.subpaths)
+        if (subpath.points.size() >= 2)
+          (shape.layer == "guides" ? scene.guides : scene.spines).push_back(polylineOf(subpath));
+    } else if (shape.layer == "holes") {
+      Region hole = enclosedRegion(shape, document.file, i, closeEpsilon, clip);
+      if (!hole.empty()) holeRegions.push_back(std::move(hole));
+    } else if (hasContainerLayer ? shape.layer == "container" : !isHelperLayer(shape.layer)) {
+      // Without a container layer, every shape outside the helper layers outlines the container.
+      scene.containerShapes.push_back(shape);
+      Region region = enclosedRegion(shape, document.file, i, closeEpsilon, clip);
+      if (area(region) <= 0.0) {
+        scene.warnings.push_back({document.file + ": " + shapeName(shape, i), "container shape encloses no area; ignored"});
+        continue;
+      }
+      containerRegions.push_back(std::move(region));
+    }
+  }
+
+  if (scene.containerShapes.empty())
+    throw InputError(document.file, hasContainerLayer || document.shapes.empty()
+                                        ? "no usable container: the file has no shape to use as a container"
+                                        : "no usable container: every shape is in a fixed/guides/spines/holes layer "
+                                          "(put the outline in a layer named 'container')");
+  if (containerRegions.empty())
+    throw InputError(document.file, "no usable container: the container shapes enclose no area");
+  scene.container = containerRegions.size() == 1 ? containerRegions.front() : unite(containerRegions, clip);
+  if (!holeRegions.empty()) scene.container = subtract(scene.container, unite(holeRegions, clip), clip);
+  normalizeOrientation(scene.container);
+  if (area(scene.container) <= 0.0)
+    throw InputError(document.file, "no usable container: the holes cover the whole container");
+  return scene;
+}
+
+Scene loadScene(const std::string& path, const SvgReadOptions& options) {
+  return sceneFromDocument(readDocument(path, options));
+}
+
+ElementArt elementFromDocument(const SvgDocument& document) {
+  ElementArt element;
+  element.source = document.file;
+  element.name = stemOf(document.file);
+
+  std::vector<std::size_t> artIndices;
+  for (std::size_t i = 0; i < document.shapes.size(); ++i) {
+    const Shape& shape = document.shapes[i];
+    const bool namedSpine = lowerCased(shape.id) == "spine";
+    if (namedSpine || shape.layer == "spines" || shape.layer == "guides") {
+      // The FLOWPAK spine: from its first to its last point.
+      if (!element.spine && shape.layer != "guides" && !shape.subpaths.empty() &&
+          shape.subpaths.front().points.size() >= 2) {
+        const auto& points = shape.subpaths.front().points;
+        element.spine = std::array<Vec2, 2>{points.front(), points.back()};
+      }
+      continue;
+    }
+    element.shapes.push_back(shape);
+    artIndices.push_back(i);
+  }
+
+  const ClipOptions clip = clipOptionsFor(bounds(element.shapes));
+  std::vector<Region> painted;
+  std::vector<Warning>& warnings = element.warnings;
+  warnings = document.warnings;
+  for (std::size_t k = 0; k < element.shapes.size(); ++k) {
+    const Shape& shape = element.shapes[k];
+    const std::string where = document.file + ": " + shapeName(shape, artIndices[k]);
+    if (shape.fill)
+      for (const Subpath& subpath : shape.subpaths)
+        if (!subpath.closed && subpath.points.size() >= 3) {
+          warnings.push_back({where, "open path used as a fill: filled as if it were closed"});
+          break;
+        }
+    Region region = paintedRegion(shape, clip);
+    if (area(region) <= 0.0) {
+      warnings.push_back({where, "path paints no area (zero-area fill, no stroke); ignored for the outline"});
+      continue;
+    }
+    painted.push_back(std::move(region));
+  }
+  if (painted.empty())
+    throw InputError(document.file, document.shapes.empty() ? "the element has no shapes"
+                                                            : "the element paints no area (every shape has zero area "
+                                                              "or no fill and no stroke)");
+  element.outline = painted.size() == 1 ? painted.front() : unite(painted, clip);
+  normalizeOrientation(element.outline);
+  if (area(element.outline) <= 0.0) throw InputError(document.file, "the element paints no area");
+  return element;
+}
+
+Library elementsFromDocument(const SvgDocument& document) {
+  std::map<int, std::vector<Shape>> byGroup;
+  for (const Shape& shape : document.shapes) byGroup[shape.topGroup].push_back(shape);
+  const auto groups = std::count_if(byGroup.begin(), byGroup.end(), [](const auto& g) { return g.first >= 0; });
+  if (groups < 2) return {elementFromDocument(document)};
+
+  Library library;
+  std::vector<std::string> failures;
+  for (auto& [group, shapes] : byGroup) {
+    SvgDocument part = document;
+    part.shapes = std::move(shapes);
+    // Named by the group: the layer name the reader gave its shapes when they share one.
+    std::string name = stemOf(document.file);
+    const std::string& layer = part.shapes.front().layer;
+    const bool shared = !layer.empty() && std::all_of(part.shapes.begin(), part.shapes.end(),
+                                                      [&](const Shape& s) { return s.layer == layer; });
+    if (group >= 0) name = shared ? layer : name + "-" + std::to_string(group + 1);
+    try {
+      ElementArt element = elementFromDocument(part);
+      element.name = name;
+      library.push_back(std::move(element));
+    } catch (const InputError& error) {
+      failures.push_back(error.what());
+    }
+  }
+  if (library.empty())
+    throw InputError(document.file, "no group paints any area" + (failures.empty() ? "" : " (" + failures.front() + ")"));
+  return library;
+}
+
+Library loadLibrary(const std::vector<std::string>& pathsOrFolders, const SvgReadOptions& options) {
+  std::vector<std::string> files;
+  for (const std::string& path : pathsOrFolders) {
+    std::error_code error;
+    if (fs::is_directory(path, error)) {
+      std::vector<std::string> inFolder;
+      for (const fs::directory_entry& entry : fs::directory_iterator(path, error)) {
+        const std::string extension = extensionOf(entry.path().string());
+        if (entry.is_regular_file(error) && (extension == ".svg" || extension == ".path"))
+          inFolder.push_back(entry.path().string());
+      }
+      if (error) throw InputError(path, "cannot list the folder: " + error.message());
+      std::sort(inFolder.begin(), inFolder.end());
+      files.insert(files.end(), inFolder.begin(), inFolder.end());
+    } else if (fs::exists(path, error)) {
+      files.push_back(path);
+    } else {
+      throw InputError(path, "no such file or folder");
+    }
+  }
+  if (files.empty()) {
+    std::string where;
+    for (const std::string& path : pathsOrFolders) where += (where.empty() ? "" : ", ") + path;
+    throw InputError(where, "no element files found (expected .svg or .path files)");
+  }
+  Library library;
+  for (const std::string& file : files) {
+    Library fromFile = elementsFromDocument(readDocument(file, options));
+    for (ElementArt& element : fromFile) library.push_back(std::move(element));
+  }
+  return library;
+}
+
+}  // namespace pak

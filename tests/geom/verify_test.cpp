@@ -1,0 +1,122 @@
+#include "pak/verify.hpp"
+
+#include <gtest/gtest.h>
+
+#include <limits>
+
+using namespace pak;
+
+namespace {
+
+Ring square(double x0, double y0, double side) {
+  return {{x0, y0}, {x0 + side, y0}, {x0 + side, y0 + side}, {x0, y0 + side}};
+}
+Region squareRegion(double x0, double y0, double side) { return {Polygon{square(x0, y0, side), {}}}; }
+
+TriMesh twoTriangles() {
+  TriMesh mesh;
+  mesh.vertices = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
+  return mesh;
+}
+
+bool mentions(const std::vector<std::string>& problems, const std::string& text) {
+  for (const std::string& p : problems)
+    if (p.find(text) != std::string::npos) return true;
+  return false;
+}
+
+}  // namespace
+
+TEST(VerifyMesh, CleanMeshPasses) {
+  MeshCheck check = verifyMesh(twoTriangles());
+  EXPECT_TRUE(check.ok);
+  EXPECT_TRUE(check.problems.empty());
+  EXPECT_TRUE(verifyMesh(TriMesh{}).ok);
+}
+
+TEST(VerifyMesh, CatchesBadIndex) {
+  TriMesh mesh = twoTriangles();
+  mesh.triangles[1] = {0, 2, 4};
+  MeshCheck check = verifyMesh(mesh);
+  EXPECT_FALSE(check.ok);
+  ASSERT_EQ(check.problems.size(), 1u);
+  EXPECT_EQ(check.problems[0], "triangle 1 has vertex index 4 outside [0, 4)");
+  mesh.triangles[1] = {-1, 2, 3};
+  EXPECT_FALSE(verifyMesh(mesh).ok);
+}
+
+TEST(VerifyMesh, CatchesInvertedTriangle) {
+  TriMesh mesh = twoTriangles();
+  mesh.triangles[0] = {0, 2, 1};
+  MeshCheck check = verifyMesh(mesh);
+  EXPECT_FALSE(check.ok);
+  ASSERT_EQ(check.problems.size(), 1u);
+  EXPECT_EQ(check.problems[0], "triangle 0 is inverted (area -0.5)");
+}
+
+TEST(VerifyMesh, CatchesZeroAreaAndRepeatedIndex) {
+  TriMesh mesh = twoTriangles();
+  mesh.vertices.push_back({2, 2});  // collinear with 0 and 2
+  mesh.triangles.push_back({0, 2, 4});
+  mesh.triangles.push_back({1, 1, 2});
+  MeshCheck check = verifyMesh(mesh);
+  EXPECT_FALSE(check.ok);
+  ASSERT_EQ(check.problems.size(), 2u);
+  EXPECT_TRUE(mentions(check.problems, "triangle 2 has zero area"));
+  EXPECT_TRUE(mentions(check.problems, "triangle 3 repeats a vertex"));
+  // A sliver below minArea counts as zero area.
+  TriMesh sliver;
+  sliver.vertices = {{0, 0}, {1, 0}, {0, 1e-6}};
+  sliver.triangles = {{0, 1, 2}};
+  EXPECT_TRUE(verifyMesh(sliver).ok);
+  EXPECT_FALSE(verifyMesh(sliver, 1e-6).ok);
+}
+
+TEST(VerifyMesh, CatchesNonFiniteVertex) {
+  TriMesh mesh = twoTriangles();
+  mesh.vertices[3].y = std::numeric_limits<double>::quiet_NaN();
+  MeshCheck check = verifyMesh(mesh);
+  EXPECT_FALSE(check.ok);
+  EXPECT_TRUE(mentions(check.problems, "vertex 3 has a non-finite coordinate"));
+}
+
+TEST(VerifyPacking, CleanPackingPasses) {
+  Region container{Polygon{square(0, 0, 10), {square(4, 4, 2)}}};
+  // Touching along an edge is not an overlap.
+  std::vector<Region> elements{squareRegion(0, 0, 2), squareRegion(2, 0, 2), squareRegion(7, 7, 3)};
+  PackingCheck check = verifyPacking(elements, container);
+  EXPECT_TRUE(check.ok);
+  EXPECT_EQ(check.overlappingPairs, 0);
+  EXPECT_EQ(check.elementsOutside, 0);
+  EXPECT_TRUE(check.problems.empty());
+  EXPECT_TRUE(verifyPacking({}, container).ok);
+}
+
+TEST(VerifyPacking, CatchesOverlap) {
+  Region container = squareRegion(0, 0, 100);
+  std::vector<Region> elements{squareRegion(0, 0, 10), squareRegion(50, 50, 5), squareRegion(20, 20, 5),
+                               squareRegion(52.5, 50, 5)};
+  PackingCheck check = verifyPacking(elements, container);
+  EXPECT_FALSE(check.ok);
+  EXPECT_EQ(check.overlappingPairs, 1);
+  EXPECT_NEAR(check.overlapArea, 12.5, 1e-9);
+  ASSERT_EQ(check.problems.size(), 1u);
+  EXPECT_EQ(check.problems[0], "elements 1 and 3 overlap by 12.5");
+  // Below the tolerance it is not counted.
+  PackingCheckOptions loose;
+  loose.areaTolerance = 20.0;
+  EXPECT_TRUE(verifyPacking(elements, container, loose).ok);
+}
+
+TEST(VerifyPacking, CatchesElementOutsideAndInHole) {
+  Region container{Polygon{square(0, 0, 10), {square(4, 4, 2)}}};
+  std::vector<Region> elements{squareRegion(9, 0, 2), squareRegion(4.5, 4.5, 1), squareRegion(1, 1, 1)};
+  PackingCheck check = verifyPacking(elements, container);
+  EXPECT_FALSE(check.ok);
+  EXPECT_EQ(check.elementsOutside, 2);
+  EXPECT_NEAR(check.outsideArea, 2.0 + 1.0, 1e-9);
+  EXPECT_TRUE(mentions(check.problems, "element 0 lies outside the container (or in a hole) by 2"));
+  EXPECT_TRUE(mentions(check.problems, "element 1 lies outside"));
+  EXPECT_FALSE(mentions(check.problems, "element 2 "));
+}

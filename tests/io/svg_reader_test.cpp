@@ -1,0 +1,501 @@
+// Parser tests on small hand-written SVG documents whose geometry is known exactly.
+#include "pak/svg_reader.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "pak/error.hpp"
+
+namespace pak {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+std::string svg(const std::string& body, const std::string& rootAttributes = R"~(viewBox="0 0 100 100")~") {
+  return R"~(<svg xmlns="http://www.w3.org/2000/svg" xmlns:inkscape="http://www.inkscape.org/namespaces/inkscape" )~" +
+         rootAttributes + ">" + body + "</svg>";
+}
+
+SvgDocument read(const std::string& body, const std::string& rootAttributes = R"~(viewBox="0 0 100 100")~") {
+  return readSvgString(svg(body, rootAttributes), "test.svg");
+}
+
+// Area of the fill of the only shape of a one-shape document.
+double fillArea(const std::string& body) {
+  SvgDocument document = read(body);
+  EXPECT_EQ(document.shapes.size(), 1u) << body;
+  if (document.shapes.empty()) return 0.0;
+  return area(filledRegion(document.shapes.front()));
+}
+
+std::vector<Vec2> pointsOf(const std::string& body) {
+  SvgDocument document = read(body);
+  EXPECT_EQ(document.shapes.size(), 1u) << body;
+  if (document.shapes.empty() || document.shapes.front().subpaths.empty()) return {};
+  return document.shapes.front().subpaths.front().points;
+}
+
+void expectSamePoints(const std::vector<Vec2>& a, const std::vector<Vec2>& b, double tolerance = 1e-9) {
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    EXPECT_NEAR(a[i].x, b[i].x, tolerance) << "point " << i;
+    EXPECT_NEAR(a[i].y, b[i].y, tolerance) << "point " << i;
+  }
+}
+
+std::string errorOf(const std::string& text, const std::string& name = "bad.svg") {
+  try {
+    readSvgString(text, name);
+  } catch (const InputError& error) {
+    return error.what();
+  }
+  return "(no error)";
+}
+
+// ---- path commands -----------------------------------------------------------------------
+
+TEST(SvgReaderPath, AbsoluteLinesAndClose) {
+  EXPECT_NEAR(fillArea(R"~(<path d="M10 10 L30 10 L30 20 L10 20 Z"/>)~"), 200.0, 1e-9);
+}
+
+TEST(SvgReaderPath, RelativeLinesAndClose) {
+  EXPECT_NEAR(fillArea(R"~(<path d="m10 10 l20 0 l0 10 l-20 0 z"/>)~"), 200.0, 1e-9);
+}
+
+TEST(SvgReaderPath, HorizontalAndVertical) {
+  EXPECT_NEAR(fillArea(R"~(<path d="M10 10 H30 V20 H10 Z"/>)~"), 200.0, 1e-9);
+  EXPECT_NEAR(fillArea(R"~(<path d="M10 10 h20 v10 h-20 z"/>)~"), 200.0, 1e-9);
+  expectSamePoints(pointsOf(R"~(<path d="M10 10 h20 v10 H10 z"/>)~"), {{10, 10}, {30, 10}, {30, 20}, {10, 20}});
+}
+
+TEST(SvgReaderPath, ImplicitRepeats) {
+  // Pairs after M are line-tos; after m they are relative line-tos; repeated L and l.
+  expectSamePoints(pointsOf(R"~(<path d="M10 10 30 10 30 20 10 20z"/>)~"), {{10, 10}, {30, 10}, {30, 20}, {10, 20}});
+  expectSamePoints(pointsOf(R"~(<path d="m10 10 20 0 0 10 -20 0z"/>)~"), {{10, 10}, {30, 10}, {30, 20}, {10, 20}});
+  expectSamePoints(pointsOf(R"~(<path d="M10 10 L30 10 30 20 10 20z"/>)~"), {{10, 10}, {30, 10}, {30, 20}, {10, 20}});
+  expectSamePoints(pointsOf(R"~(<path d="M10 10 l20 0 0 10 -20 0z"/>)~"), {{10, 10}, {30, 10}, {30, 20}, {10, 20}});
+}
+
+TEST(SvgReaderPath, CompactNumbers) {
+  // "1.5.5" is 1.5 then .5; exponents; signs as separators.
+  expectSamePoints(pointsOf(R"~(<path d="M0,0L1.5.5L1e1-2e-1"/>)~"), {{0, 0}, {1.5, 0.5}, {10, -0.2}});
+  expectSamePoints(pointsOf(R"~(<path d="M0 0L1e-3 0 1E+1 5"/>)~"), {{0, 0}, {0.001, 0}, {10, 5}});
+}
+
+TEST(SvgReaderPath, SubpathAfterCloseStartsAtTheClosedStart) {
+  SvgDocument document = read(R"~(<path d="M0 0 L10 0 L10 10 Z L0 -10 L10 -10"/>)~");
+  ASSERT_EQ(document.shapes.size(), 1u);
+  ASSERT_EQ(document.shapes[0].subpaths.size(), 2u);
+  expectSamePoints(document.shapes[0].subpaths[1].points, {{0, 0}, {0, -10}, {10, -10}});
+  EXPECT_TRUE(document.shapes[0].subpaths[0].closed);
+  EXPECT_FALSE(document.shapes[0].subpaths[1].closed);
+}
+
+TEST(SvgReaderPath, FullCircleFromTwoArcs) {
+  const double expected = kPi * 20 * 20;
+  EXPECT_NEAR(fillArea(R"~(<path d="M50 30 A20 20 0 1 0 50 70 A20 20 0 1 0 50 30 Z"/>)~"), expected, expected * 2e-3);
+  EXPECT_NEAR(fillArea(R"~(<path d="m50 30 a20 20 0 1 0 0 40 a20 20 0 1 0 0 -40 z"/>)~"), expected, expected * 2e-3);
+}
+
+TEST(SvgReaderPath, ArcFlagsPickTheRightHalf) {
+  // A half disc of radius 10 closed by its diameter: small/large and sweep both give a half.
+  const double half = kPi * 100 / 2;
+  EXPECT_NEAR(fillArea(R"~(<path d="M40 50 A10 10 0 0 1 60 50 Z"/>)~"), half, half * 2e-3);
+  // An arc of radius 20 spanning a chord of 20: the small segment vs the large one.
+  const double r = 20, theta = 2 * std::asin(10.0 / 20.0);
+  const double smallSegment = r * r / 2 * (theta - std::sin(theta));
+  const double largeSegment = kPi * r * r - smallSegment;
+  EXPECT_NEAR(fillArea(R"~(<path d="M40 50 A20 20 0 0 1 60 50 Z"/>)~"), smallSegment, smallSegment * 1e-2);
+  EXPECT_NEAR(fillArea(R"~(<path d="M40 50 A20 20 0 1 1 60 50 Z"/>)~"), largeSegment, largeSegment * 2e-3);
+}
+
+TEST(SvgReaderPath, ArcRadiiTooSmallAreScaledUp) {
+  // SVG scales radii up until the arc fits: a half circle of radius 10.
+  const double half = kPi * 100 / 2;
+  EXPECT_NEAR(fillArea(R"~(<path d="M40 50 A1 1 0 0 1 60 50 Z"/>)~"), half, half * 2e-3);
+}
+
+TEST(SvgReaderPath, QuadraticCurveArea) {
+  // A parabolic segment: 2/3 of base × height; the curve peaks at half the control height.
+  const double segment = 2.0 / 3.0 * 20 * 10;
+  EXPECT_NEAR(fillArea(R"~(<path d="M10 50 Q20 70 30 50 Z"/>)~"), segment, segment * 1e-3);
+  EXPECT_NEAR(fillArea(R"~(<path d="m10 50 q10 20 20 0 z"/>)~"), segment, segment * 1e-3);
+}
+
+TEST(SvgReaderPath, SmoothQuadraticReflectsTheControlPoint) {
+  expectSamePoints(pointsOf(R"~(<path d="M10 50 Q20 70 30 50 T50 50"/>)~"),
+                   pointsOf(R"~(<path d="M10 50 Q20 70 30 50 Q40 30 50 50"/>)~"));
+  expectSamePoints(pointsOf(R"~(<path d="M10 50 q10 20 20 0 t20 0"/>)~"),
+                   pointsOf(R"~(<path d="M10 50 Q20 70 30 50 Q40 30 50 50"/>)~"));
+}
+
+TEST(SvgReaderPath, CubicQuarterCircle) {
+  // The classic cubic approximation of a quarter circle (k = 0.5523) differs from the true
+  // quarter disc by less than 0.03 %.
+  const double k = 0.55228474983 * 10;
+  const std::string d = "M0 0 L10 0 C10 " + std::to_string(k) + " " + std::to_string(k) + " 10 0 10 Z";
+  const double quarter = kPi * 100 / 4;
+  EXPECT_NEAR(fillArea(R"~(<path d=")~" + d + R"~("/>)~"), quarter, quarter * 1e-3);
+  const std::string relative = "m0 0 l10 0 c0 " + std::to_string(k) + " " + std::to_string(k - 10) + " 10 -10 10 z";
+  EXPECT_NEAR(fillArea(R"~(<path d=")~" + relative + R"~("/>)~"), quarter, quarter * 1e-3);
+}
+
+TEST(SvgReaderPath, SmoothCubicReflectsTheControlPoint) {
+  expectSamePoints(pointsOf(R"~(<path d="M0 50 C0 60 10 60 10 50 S20 40 20 50"/>)~"),
+                   pointsOf(R"~(<path d="M0 50 C0 60 10 60 10 50 C10 40 20 40 20 50"/>)~"));
+  expectSamePoints(pointsOf(R"~(<path d="M0 50 c0 10 10 10 10 0 s10 -10 10 0"/>)~"),
+                   pointsOf(R"~(<path d="M0 50 C0 60 10 60 10 50 C10 40 20 40 20 50"/>)~"));
+}
+
+TEST(SvgReaderPath, FlatteningHonoursTheTolerance) {
+  // Every flattened vertex of a circle lies on it, and chords stay within the tolerance
+  // (flatness × viewBox size = 1e-4 × 100).
+  SvgDocument document = read(R"~(<circle cx="50" cy="50" r="40"/>)~");
+  ASSERT_EQ(document.shapes.size(), 1u);
+  const auto& points = document.shapes[0].subpaths[0].points;
+  EXPECT_GT(points.size(), 40u);
+  EXPECT_LT(points.size(), 2000u);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    // Cubic arcs deviate from the true circle by ~2.7e-4 r; the tolerance adds 0.01.
+    EXPECT_NEAR(distance(points[i], {50, 50}), 40.0, 40 * 3e-4 + 0.011);
+    const Vec2 mid = (points[i] + points[(i + 1) % points.size()]) * 0.5;
+    EXPECT_GT(distance(mid, {50, 50}), 40.0 - 40 * 3e-4 - 0.011);
+  }
+}
+
+// ---- basic shapes ------------------------------------------------------------------------
+
+TEST(SvgReaderShapes, Rect) {
+  EXPECT_NEAR(fillArea(R"~(<rect x="10" y="10" width="20" height="30"/>)~"), 600.0, 1e-9);
+}
+
+// Chords cut inside curves by at most the flattening tolerance (1e-4 × the 100-wide
+// viewBox), so a curved boundary of length L loses at most L × 0.01 of area.
+constexpr double kTolerance = 0.01;
+
+TEST(SvgReaderShapes, RoundedRect) {
+  const double expected = 20 * 30 - (4 - kPi) * 4 * 4;
+  const double corners = 2 * kPi * 4;
+  EXPECT_NEAR(fillArea(R"~(<rect x="10" y="10" width="20" height="30" rx="4"/>)~"), expected, corners * kTolerance);
+  // ry alone also rounds with rx = ry.
+  EXPECT_NEAR(fillArea(R"~(<rect x="10" y="10" width="20" height="30" ry="4"/>)~"), expected, corners * kTolerance);
+  // Elliptical corners: (4 − π) rx ry.
+  EXPECT_NEAR(fillArea(R"~(<rect x="10" y="10" width="20" height="30" rx="4" ry="2"/>)~"),
+              20 * 30 - (4 - kPi) * 4 * 2, corners * kTolerance);
+  EXPECT_LT(fillArea(R"~(<rect x="10" y="10" width="20" height="30" rx="4"/>)~"), expected);
+}
+
+TEST(SvgReaderShapes, CircleAndEllipse) {
+  EXPECT_NEAR(fillArea(R"~(<circle cx="50" cy="50" r="10"/>)~"), kPi * 100, 2 * kPi * 10 * kTolerance);
+  // The ellipse's perimeter is below 2π × 20.
+  EXPECT_NEAR(fillArea(R"~(<ellipse cx="50" cy="50" rx="20" ry="10"/>)~"), kPi * 200, 2 * kPi * 20 * kTolerance);
+}
+
+TEST(SvgReaderShapes, LinePolylinePolygon) {
+  SvgDocument document = read(R"~(<line x1="0" y1="0" x2="10" y2="5" stroke="black"/>
+      <polyline points="0,0 10,0 10,10" fill="none" stroke="black"/>
+      <polygon points="0,0 10,0 10,10 0,10"/>)~");
+  ASSERT_EQ(document.shapes.size(), 3u);
+  EXPECT_EQ(document.shapes[0].tag, "line");
+  EXPECT_FALSE(document.shapes[0].subpaths[0].closed);
+  expectSamePoints(document.shapes[0].subpaths[0].points, {{0, 0}, {10, 5}});
+  EXPECT_EQ(document.shapes[1].tag, "polyline");
+  EXPECT_FALSE(document.shapes[1].subpaths[0].closed);
+  EXPECT_EQ(document.shapes[1].subpaths[0].points.size(), 3u);
+  EXPECT_EQ(document.shapes[2].tag, "polygon");
+  EXPECT_TRUE(document.shapes[2].subpaths[0].closed);
+  EXPECT_NEAR(area(filledRegion(document.shapes[2])), 100.0, 1e-9);
+}
+
+TEST(SvgReaderShapes, ZeroSizeShapesDrawNothing) {
+  SvgDocument document = read(R"~(<rect x="1" y="1" width="0" height="10"/><circle cx="5" cy="5" r="0"/>)~");
+  EXPECT_TRUE(document.shapes.empty());
+}
+
+// ---- transforms and units ----------------------------------------------------------------
+
+TEST(SvgReaderTransform, NestedTransformsMapCoordinatesExactly) {
+  SvgDocument document = read(R"~(<g transform="translate(10,20)"><g transform="scale(2)">
+      <path transform="rotate(90)" d="M1 0 L2 0 L2 1 Z"/></g></g>)~");
+  ASSERT_EQ(document.shapes.size(), 1u);
+  // rotate(90): (x, y) → (−y, x); scale 2; translate (10, 20).
+  expectSamePoints(document.shapes[0].subpaths[0].points, {{10, 22}, {10, 24}, {8, 24}}, 1e-12);
+}
+
+TEST(SvgReaderTransform, TransformListAndMatrix) {
+  SvgDocument document = read(R"~(<path transform="translate(5 5) matrix(1 0 0 -1 0 0) skewX(0)" d="M1 2 L3 2 L3 4 Z"/>)~");
+  ASSERT_EQ(document.shapes.size(), 1u);
+  expectSamePoints(document.shapes[0].subpaths[0].points, {{6, 3}, {8, 3}, {8, 1}}, 1e-12);
+}
+
+TEST(SvgReaderTransform, StrokeWidthScalesWithTheTransform) {
+  SvgDocument document = read(R"~(<g transform="scale(3)"><path d="M0 0 L10 0" stroke="red" stroke-width="2"/></g>)~");
+  ASSERT_EQ(document.shapes.size(), 1u);
+  EXPECT_NEAR(document.shapes[0].strokeWidth, 6.0, 1e-12);
+}
+
+TEST(SvgReaderUnits, ViewBoxKeepsUserUnitsAndSizeResolvesMillimetres) {
+  SvgDocument document = read(R"~(<rect x="10" y="10" width="20" height="20"/>)~",
+                              R"~(width="100mm" height="50mm" viewBox="0 0 200 100")~");
+  EXPECT_NEAR(document.width, 100 * 96 / 25.4, 1e-9);
+  EXPECT_NEAR(document.height, 50 * 96 / 25.4, 1e-9);
+  EXPECT_DOUBLE_EQ(document.viewBox.min.x, 0);
+  EXPECT_DOUBLE_EQ(document.viewBox.width(), 200);
+  EXPECT_DOUBLE_EQ(document.viewBox.height(), 100);
+  // Shapes stay in viewBox coordinates.
+  ASSERT_EQ(document.shapes.size(), 1u);
+  EXPECT_NEAR(area(filledRegion(document.shapes[0])), 400.0, 1e-9);
+}
+
+TEST(SvgReaderUnits, SizeWithoutViewBoxDefinesIt) {
+  SvgDocument document = read(R"~(<rect x="0" y="0" width="1" height="1"/>)~", R"~(width="10mm" height="2.54cm")~");
+  EXPECT_NEAR(document.viewBox.width(), 10 * 96 / 25.4, 1e-9);
+  EXPECT_NEAR(document.viewBox.height(), 96, 1e-9);
+}
+
+TEST(SvgReaderUnits, AllAbsoluteUnitsAndPercent) {
+  for (const char* size : {"1in", "72pt", "6pc", "2.54cm", "25.4mm", "96px", "96"}) {
+    SvgDocument document = read(R"~(<rect width="1" height="1"/>)~",
+                                std::string("width=\"") + size + "\" height=\"" + size + "\"");
+    EXPECT_NEAR(document.width, 96, 1e-9) << size;
+  }
+  SvgDocument document = read(R"~(<rect width="50%" height="10%"/>)~", R"~(width="50%" viewBox="0 0 200 100")~");
+  EXPECT_NEAR(document.width, 100, 1e-9);
+  ASSERT_EQ(document.shapes.size(), 1u);
+  // A rect 50 % × 10 % of the 200 × 100 viewBox.
+  EXPECT_NEAR(area(filledRegion(document.shapes[0])), 100 * 10, 1e-9);
+}
+
+TEST(SvgReaderUnits, NestedSvgMapsItsViewBox) {
+  SvgDocument document = read(R"~(<svg x="10" y="10" width="20" height="20" viewBox="0 0 10 10">
+      <rect x="0" y="0" width="10" height="10"/></svg>)~");
+  ASSERT_EQ(document.shapes.size(), 1u);
+  const Box box = bounds(document.shapes[0]);
+  EXPECT_NEAR(box.min.x, 10, 1e-12);
+  EXPECT_NEAR(box.max.x, 30, 1e-12);
+}
+
+// ---- paint -------------------------------------------------------------------------------
+
+TEST(SvgReaderPaint, DefaultFillIsBlackAndNoStroke) {
+  SvgDocument document = read(R"~(<rect width="1" height="1"/>)~");
+  ASSERT_EQ(document.shapes.size(), 1u);
+  ASSERT_TRUE(document.shapes[0].fill);
+  EXPECT_EQ(*document.shapes[0].fill, (Color{0, 0, 0, 1.0}));
+  EXPECT_FALSE(document.shapes[0].stroke);
+}
+
+TEST(SvgReaderPaint, ColoursFromAttributesStyleAndGroups) {
+  SvgDocument document = read(R"~(
+      <rect id="attr" width="1" height="1" fill="#ff8000" stroke="rgb(1,2,3)" stroke-width="3"/>
+      <rect id="style" width="1" height="1" fill="red" style="fill:#00ff00;stroke:blue"/>
+      <g fill="navy" stroke="#abc" style="stroke-width:2"><rect id="inherited" width="1" height="1"/>
+        <g fill="none"><rect id="none" width="1" height="1" stroke="none"/></g></g>
+      <g color="#123456"><rect id="current" width="1" height="1" fill="currentColor"/></g>)~");
+  ASSERT_EQ(document.shapes.size(), 5u);
+  const Shape& attr = document.shapes[0];
+  EXPECT_EQ(attr.id, "attr");
+  EXPECT_EQ(*attr.fill, (Color{255, 128, 0, 1.0}));
+  EXPECT_EQ(*attr.stroke, (Color{1, 2, 3, 1.0}));
+  EXPECT_DOUBLE_EQ(attr.strokeWidth, 3.0);
+  const Shape& style = document.shapes[1];
+  EXPECT_EQ(*style.fill, (Color{0, 255, 0, 1.0}));
+  EXPECT_EQ(*style.stroke, (Color{0, 0, 255, 1.0}));
+  const Shape& inherited = document.shapes[2];
+  EXPECT_EQ(*inherited.fill, (Color{0, 0, 128, 1.0}));
+  EXPECT_EQ(*inherited.stroke, (Color{0xaa, 0xbb, 0xcc, 1.0}));
+  EXPECT_DOUBLE_EQ(inherited.strokeWidth, 2.0);
+  const Shape& none = document.shapes[3];
+  EXPECT_FALSE(none.fill);
+  EXPECT_FALSE(none.stroke);
+  EXPECT_EQ(*document.shapes[4].fill, (Color{0x12, 0x34, 0x56, 1.0}));
+}
+
+TEST(SvgReaderPaint, OpacitiesMultiplyDownTheTree) {
+  SvgDocument document = read(R"~(<g opacity="0.5"><g style="opacity:0.5">
+      <rect width="1" height="1" opacity="0.8" fill-opacity="0.25" stroke="red" stroke-opacity="0.75"/></g></g>)~");
+  ASSERT_EQ(document.shapes.size(), 1u);
+  const Shape& shape = document.shapes[0];
+  EXPECT_NEAR(shape.opacity, 0.2, 1e-12);
+  EXPECT_NEAR(shape.fill->alpha, 0.25, 1e-12);
+  EXPECT_NEAR(shape.stroke->alpha, 0.75, 1e-12);
+}
+
+TEST(SvgReaderPaint, GradientBecomesTheMeanOfItsStops) {
+  SvgDocument document = read(R"~(<defs>
+      <linearGradient id="stops"><stop offset="0" stop-color="#ff0000"/>
+        <stop offset="1" style="stop-color:#0000ff;stop-opacity:0.5"/></linearGradient>
+      <linearGradient id="g" xlink:href="#stops" xmlns:xlink="http://www.w3.org/1999/xlink"/></defs>
+      <rect width="10" height="10" fill="url(#g)"/>
+      <rect width="10" height="10" fill="url(#missing) #00ff00"/>)~");
+  ASSERT_EQ(document.shapes.size(), 2u);
+  EXPECT_EQ(document.shapes[0].fill->r, 128);
+  EXPECT_EQ(document.shapes[0].fill->g, 0);
+  EXPECT_EQ(document.shapes[0].fill->b, 128);
+  EXPECT_NEAR(document.shapes[0].fill->alpha, 0.75, 1e-12);
+  EXPECT_EQ(*document.shapes[1].fill, (Color{0, 255, 0, 1.0}));
+  EXPECT_FALSE(document.warnings.empty());
+}
+
+// ---- visibility, fill rules, structure ---------------------------------------------------
+
+TEST(SvgReaderVisibility, HiddenThingsAreSkipped) {
+  SvgDocument document = read(R"~(
+      <rect id="shown" width="1" height="1"/>
+      <rect id="a" width="1" height="1" display="none"/>
+      <rect id="b" width="1" height="1" style="display:none"/>
+      <g style="display:none"><rect id="c" width="1" height="1" style="display:inline"/></g>
+      <rect id="d" width="1" height="1" visibility="hidden"/>
+      <g visibility="hidden"><rect id="e" width="1" height="1"/>
+        <rect id="shown-again" width="1" height="1" visibility="visible"/></g>)~");
+  ASSERT_EQ(document.shapes.size(), 2u);
+  EXPECT_EQ(document.shapes[0].id, "shown");
+  EXPECT_EQ(document.shapes[1].id, "shown-again");
+}
+
+TEST(SvgReaderVisibility, DefinitionsAreNotDrawn) {
+  SvgDocument document = read(R"~(
+      <defs><rect id="in-defs" width="1" height="1"/></defs>
+      <clipPath id="clip"><rect width="1" height="1"/></clipPath>
+      <mask id="mask"><rect width="1" height="1"/></mask>
+      <symbol id="symbol"><rect width="1" height="1"/></symbol>
+      <rect id="drawn" width="1" height="1"/>)~");
+  ASSERT_EQ(document.shapes.size(), 1u);
+  EXPECT_EQ(document.shapes[0].id, "drawn");
+}
+
+TEST(SvgReaderVisibility, UseTextAndImageAreSkippedWithAWarning) {
+  SvgDocument document = read(R"~(<rect id="r" width="1" height="1"/>
+      <use href="#r" x="5"/><text x="1" y="1">Hello <tspan>world</tspan></text>
+      <image width="10" height="10" href="cat.png"/>)~");
+  EXPECT_EQ(document.shapes.size(), 1u);
+  int skipped = 0;
+  for (const Warning& warning : document.warnings)
+    if (warning.message.find("not supported") != std::string::npos) ++skipped;
+  EXPECT_EQ(skipped, 3);
+}
+
+TEST(SvgReaderFillRule, EvenOddMakesHolesNonZeroDoesNot) {
+  const std::string squares = "M0 0 H10 V10 H0 Z M3 3 H7 V7 H3 Z";  // same winding
+  SvgDocument nonzero = read(R"~(<path fill-rule="nonzero" d=")~" + squares + R"~("/>)~");
+  SvgDocument evenodd = read(R"~(<path style="fill-rule:evenodd" d=")~" + squares + R"~("/>)~");
+  EXPECT_EQ(nonzero.shapes[0].fillRule, FillRule::NonZero);
+  EXPECT_EQ(evenodd.shapes[0].fillRule, FillRule::EvenOdd);
+  Region full = filledRegion(nonzero.shapes[0]);
+  Region holed = filledRegion(evenodd.shapes[0]);
+  EXPECT_NEAR(area(full), 100.0, 1e-9);
+  EXPECT_NEAR(area(holed), 84.0, 1e-9);
+  ASSERT_EQ(holed.size(), 1u);
+  EXPECT_EQ(holed[0].holes.size(), 1u);
+  // Opposite winding makes a hole under nonzero too.
+  SvgDocument reversed = read(R"~(<path d="M0 0 H10 V10 H0 Z M3 3 V7 H7 V3 Z"/>)~");
+  EXPECT_NEAR(area(filledRegion(reversed.shapes[0])), 84.0, 1e-9);
+}
+
+TEST(SvgReaderLayers, ByIdAndInkscapeLabelCaseInsensitive) {
+  SvgDocument document = read(R"~(
+      <g id="Container"><rect id="c" width="1" height="1"/></g>
+      <g id="layer2" inkscape:label="FIXED"><g id="sub"><rect id="f" width="1" height="1"/></g></g>
+      <g id="Artwork"><g id="guides"><path id="g" d="M0 0 L1 1" stroke="black"/></g>
+        <rect id="art" width="1" height="1"/></g>
+      <rect id="loose" width="1" height="1"/>)~");
+  ASSERT_EQ(document.shapes.size(), 5u);
+  EXPECT_EQ(document.shapes[0].layer, "container");
+  EXPECT_EQ(document.shapes[0].topGroup, 0);
+  EXPECT_EQ(document.shapes[1].layer, "fixed");
+  EXPECT_EQ(document.shapes[1].topGroup, 1);
+  EXPECT_EQ(document.shapes[2].layer, "guides");  // nearest known name wins
+  EXPECT_EQ(document.shapes[2].topGroup, 2);
+  EXPECT_EQ(document.shapes[3].layer, "artwork");  // else the outermost named group
+  EXPECT_EQ(document.shapes[4].layer, "");
+  EXPECT_EQ(document.shapes[4].topGroup, -1);
+  EXPECT_EQ(document.layers, (std::vector<std::string>{"container", "fixed", "artwork", "guides"}));
+}
+
+TEST(SvgReaderNamespaces, FilesWithoutXmlnsOrWithIllustratorEntitiesStillRead) {
+  SvgDocument bare = readSvgString(R"~(<svg viewBox="0 0 10 10"><rect width="2" height="3"/></svg>)~", "bare.svg");
+  ASSERT_EQ(bare.shapes.size(), 1u);
+  SvgDocument illustrator = readSvgString(R"~(<?xml version="1.0"?>
+      <!DOCTYPE svg PUBLIC "-//W3C//DTD SVG 1.1//EN" "http://www.w3.org/Graphics/SVG/1.1/DTD/svg11.dtd" [
+        <!ENTITY ns_svg "http://www.w3.org/2000/svg">]>
+      <svg xmlns="&ns_svg;" viewBox="0 0 10 10"><g id="Layer_1"><rect width="2" height="3"/></g></svg>)~",
+                                          "illustrator.svg");
+  ASSERT_EQ(illustrator.shapes.size(), 1u);
+  EXPECT_EQ(illustrator.shapes[0].layer, "layer_1");
+}
+
+TEST(SvgReaderNamespaces, EditorMetadataIsIgnored) {
+  SvgDocument document = readSvgString(R"~(<svg xmlns="http://www.w3.org/2000/svg"
+      xmlns:sodipodi="http://sodipodi.sourceforge.net/DTD/sodipodi-0.dtd" viewBox="0 0 10 10" data-name="x">
+      <sodipodi:namedview pagecolor="#fff"/><metadata><foo/></metadata><title>t</title>
+      <rect width="2" height="3" sodipodi:type="rect" style="-inkscape-font-specification:x;fill:red"/></svg>)~",
+                                       "inkscape.svg");
+  ASSERT_EQ(document.shapes.size(), 1u);
+  EXPECT_EQ(*document.shapes[0].fill, (Color{255, 0, 0, 1.0}));
+}
+
+// ---- errors ------------------------------------------------------------------------------
+
+TEST(SvgReaderErrors, MissingFile) {
+  try {
+    readSvgFile("/no/such/folder/missing.svg");
+    FAIL() << "expected an InputError";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("/no/such/folder/missing.svg"), std::string::npos);
+    EXPECT_NE(std::string(error.what()).find("cannot open"), std::string::npos);
+  }
+}
+
+TEST(SvgReaderErrors, NotXml) {
+  const std::string message = errorOf("<svg><g></svg>", "broken.svg");
+  EXPECT_NE(message.find("broken.svg"), std::string::npos) << message;
+  EXPECT_NE(message.find("not a valid XML"), std::string::npos) << message;
+  EXPECT_NE(message.find("line 1"), std::string::npos) << message;
+  EXPECT_NE(errorOf("just some text", "text.svg").find("not a valid XML"), std::string::npos);
+  EXPECT_NE(errorOf("", "empty.svg").find("empty.svg"), std::string::npos);
+}
+
+TEST(SvgReaderErrors, XmlThatIsNotSvg) {
+  const std::string message = errorOf("<html><body/></html>", "page.svg");
+  EXPECT_NE(message.find("page.svg"), std::string::npos) << message;
+  EXPECT_NE(message.find("not an SVG document"), std::string::npos) << message;
+  EXPECT_NE(message.find("<html>"), std::string::npos) << message;
+}
+
+TEST(SvgReaderErrors, NanCoordinateNamesTheElement) {
+  const std::string message = errorOf(svg(R"~(<path id="broken" d="M0 0 L NaN 5 Z"/>)~"), "nan.svg");
+  EXPECT_NE(message.find("nan.svg"), std::string::npos) << message;
+  EXPECT_NE(message.find("broken"), std::string::npos) << message;
+  EXPECT_NE(message.find("non-finite"), std::string::npos) << message;
+  EXPECT_NE(errorOf(svg(R"~(<rect id="r" width="inf" height="1"/>)~")).find("non-finite"), std::string::npos);
+}
+
+TEST(SvgReaderErrors, AbsurdCoordinateNamesTheElement) {
+  const std::string message = errorOf(svg(R"~(<path id="far" d="M0 0 L 1e12 5 L0 5 Z"/>)~"), "far.svg");
+  EXPECT_NE(message.find("far.svg"), std::string::npos) << message;
+  EXPECT_NE(message.find("<path id=\"far\">"), std::string::npos) << message;
+  EXPECT_NE(message.find("absurd"), std::string::npos) << message;
+  // Also when the transform makes it absurd, or a tag without id.
+  const std::string scaled = errorOf(svg(R"~(<g transform="scale(1e8)"><rect width="100" height="1"/></g>)~"));
+  EXPECT_NE(scaled.find("<rect>"), std::string::npos) << scaled;
+  EXPECT_NE(scaled.find("absurd"), std::string::npos) << scaled;
+}
+
+TEST(SvgReaderErrors, GarbagePathData) {
+  const std::string message = errorOf(svg(R"~(<path id="p" d="M0 0 L 5 x Z"/>)~"), "garbage.svg");
+  EXPECT_NE(message.find("garbage.svg"), std::string::npos) << message;
+  EXPECT_NE(message.find("<path id=\"p\">"), std::string::npos) << message;
+  EXPECT_NE(message.find("cannot be parsed"), std::string::npos) << message;
+}
+
+TEST(SvgReaderErrors, UnparsableStyleIsAWarningNotAnError) {
+  SvgDocument document = read(R"~(<rect width="1" height="1" fill="context-fill" opacity="lots"/>)~");
+  EXPECT_EQ(document.shapes.size(), 1u);
+  EXPECT_GE(document.warnings.size(), 1u);
+}
+
+}  // namespace
+}  // namespace pak
