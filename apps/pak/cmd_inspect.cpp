@@ -137,10 +137,25 @@ bool hasLayer(const SvgDocument& document, const std::string& name) {
   return false;
 }
 
+// Would a user mean this file as a container? Yes for a container layer (checked before),
+// for files with other scene layers, for .path files (their role is decided by use) and for
+// a lone shape; an element drawing of several shapes is not shown as a scene.
+bool looksLikeScene(const SvgDocument& document) {
+  for (const char* layer : {"fixed", "guides", "spines", "holes"})
+    if (hasLayer(document, layer)) return true;
+  if (document.file.size() >= 5 && document.file.compare(document.file.size() - 5, 5, ".path") == 0) return true;
+  return document.shapes.size() == 1;
+}
+
 // A file with a container layer is a scene. Any other file is shown as an element, and also
-// as a scene when Pak would accept it as a container (a lone closed shape, a .path outline).
+// as a scene when Pak would accept it as a container and it looks meant as one.
 json inspectFile(const std::string& file) {
   SvgDocument document = readDocument(file);
+  if (document.shapes.empty()) {
+    // Say why nothing is left (text, hidden layers …) rather than a bare "no shapes".
+    std::string reason = document.warnings.empty() ? "" : " (first skipped: " + document.warnings.front().message + ")";
+    throw InputError(file, "no usable shape" + reason);
+  }
   std::optional<Scene> scene;
   Library elements;
   if (hasLayer(document, "container")) {
@@ -152,10 +167,12 @@ json inspectFile(const std::string& file) {
     } catch (const InputError& error) {
       elementError = error;
     }
-    try {
-      scene = sceneFromDocument(document);
-    } catch (const InputError&) {
-      // Not usable as a container; the element view (or its error) says what the file is.
+    if (looksLikeScene(document) || elements.empty()) {
+      try {
+        scene = sceneFromDocument(document);
+      } catch (const InputError&) {
+        // Not usable as a container; the element view (or its error) says what the file is.
+      }
     }
     if (elements.empty() && !scene) {
       if (elementError) throw *elementError;
@@ -173,6 +190,7 @@ json inspectFile(const std::string& file) {
   };
   addWarnings(document.warnings);
   if (scene) addWarnings(scene->warnings);
+  for (const ElementArt& element : elements) addWarnings(element.warnings);
 
   json elementList = json::array();
   for (const ElementArt& element : elements) elementList.push_back(elementJson(element));

@@ -54,6 +54,7 @@ const NumberOption kNumberOptions[] = {
     {"damping", &RepulsionOptions::damping, "fraction of each vertex's velocity lost per step (0: none)"},
     {"growth-rate", &RepulsionOptions::growthRate, "k_g: growth factor increase per unit time while an element has room"},
     {"cell-size", &RepulsionOptions::cellSize, "neighbour grid cell and repulsion reach, canonical units (0: 2 × mesh spacing)"},
+    {"outside-tolerance", &RepulsionOptions::outsideTolerance, "a mesh pushed further than this outside the container stops growing (canonical units; 1e9: never, as in the thesis)"},
     {"stall-epsilon", &RepulsionOptions::stallEpsilon, "ε of eq. 4.7: stop when the RMS fill change per iteration falls below it"},
 };
 const IntegerOption kIntegerOptions[] = {
@@ -69,6 +70,7 @@ struct PackArguments {
   std::string output, png, config, report, snapshots;
   int pngWidth = 1200;
   int every = 500;
+  int progressEvery = 0;
   bool quiet = false, debugLayers = false;
   std::uint64_t seed = 1;
   RepulsionOptions options;
@@ -101,6 +103,11 @@ void applyConfig(PackArguments& args) {
         args.options.*o.field = value.get<int>();
         known = true;
       }
+    if (key == "stall-on-measured-area") {
+      if (!value.is_boolean()) throw InputError(args.config, "\"stall-on-measured-area\" must be true or false");
+      args.options.stallOnMeasuredArea = value.get<bool>();
+      known = true;
+    }
     if (key == "seed") {
       if (!value.is_number_unsigned()) throw InputError(args.config, "\"seed\" must be a non-negative integer");
       args.seed = value.get<std::uint64_t>();
@@ -130,7 +137,7 @@ int runPack(PackArguments& args) {
   const bool tty = isatty(STDERR_FILENO);
   RepulsionCallbacks callbacks;
   if (!args.quiet) {
-    callbacks.progressEvery = getenv("PAK_TRACE") ? 1 : (tty ? 50 : 1000);
+    callbacks.progressEvery = args.progressEvery > 0 ? args.progressEvery : (tty ? 50 : 1000);
     callbacks.onProgress = [&](const RepulsionProgress& p) {
       double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
       std::fprintf(stderr, "%spak pack: iteration %6d  fill %.3f  growing %3d/%d  %s%s", tty ? "\r" : "", p.iteration,
@@ -194,6 +201,7 @@ int runPack(PackArguments& args) {
     for (const auto& o : kNumberOptions) parameters[o.name] = args.options.*o.field;
     for (const auto& o : kIntegerOptions) parameters[o.name] = args.options.*o.field;
     parameters["seed"] = args.seed;
+    parameters["stall-on-measured-area"] = args.options.stallOnMeasuredArea;
     parameters["threads-used"] = args.options.threads > 0 ? args.options.threads
                                                           : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     report["parameters"] = parameters;
@@ -245,8 +253,12 @@ const CommandRegistrar registrar{{"pack", [](CLI::App& app) {
   cmd->add_option("--report", args->report, "write a JSON report: parameters, iterations, times, fill ratios, overlaps");
   cmd->add_option("--snapshots", args->snapshots, "write intermediate SVGs into this folder");
   cmd->add_option("--every", args->every, "snapshot interval in iterations")->capture_default_str();
+  cmd->add_flag("--stall-on-measured-area", args->options.stallOnMeasuredArea,
+                "apply eq. 4.7 to the measured skin area, as the thesis does, instead of the meshes' rest area");
   cmd->add_flag("--debug-layers", args->debugLayers, "add the skins and meshes as extra layers");
   cmd->add_flag("--quiet,-q", args->quiet, "no progress output");
+  cmd->add_option("--progress-every", args->progressEvery,
+                  "progress line interval in iterations (0: 50 on a terminal, 1000 otherwise)");
   return [args] { return runPack(*args); };
 }}};
 

@@ -38,10 +38,16 @@ struct RepulsionOptions {
   double damping = 0.2;                  // fraction of velocity lost per step (thesis: none)
   double growthRate = 0.01;              // k_g: g += k_g Δt per iteration while not overlapping
   double cellSize = 0.0;                 // neighbour grid cell and repulsion reach; 0: 2 × mesh spacing
+  // A mesh with a vertex pushed further than this outside the container stops growing,
+  // as one with a vertex inside another mesh does (thesis: no such rule; use a huge value).
+  double outsideTolerance = 0.5;
   // --- stopping (4.5.2); whichever comes first
   double targetFill = 0.80;       // skin area / container area
   int stallWindow = 100;          // w of eq. 4.7
-  double stallEpsilon = 3e-5;     // ε of eq. 4.7 on the meshes' rest-area fraction, per iteration
+  double stallEpsilon = 3e-5;     // ε of eq. 4.7, per iteration
+  // Eq. 4.7's area fraction: false, the meshes' rest area (g² × skin area at rest), which
+  // moves only by growth; true, the measured skin area as in the thesis (jitters more).
+  bool stallOnMeasuredArea = false;
   int maxIterations = 30000;
   // --- run
   std::uint64_t seed = 1;

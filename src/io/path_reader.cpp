@@ -228,6 +228,16 @@ SvgDocument readPathString(const std::string& text, const std::string& name) {
     }
   }
 
+  // The original files list an element's details (eyes, belly) first and its silhouette
+  // last, and drew the silhouette underneath: move it in front of the details so they show.
+  std::vector<std::size_t> boundary;
+  for (std::size_t i = 0; i < document.shapes.size(); ++i)
+    if (document.shapes[i].layer.empty()) boundary.push_back(i);
+  if (boundary.size() > 1)
+    std::rotate(document.shapes.begin() + static_cast<std::ptrdiff_t>(boundary.front()),
+                document.shapes.begin() + static_cast<std::ptrdiff_t>(boundary.back()),
+                document.shapes.begin() + static_cast<std::ptrdiff_t>(boundary.back()) + 1);
+
   for (const Shape& shape : document.shapes)
     if (!shape.layer.empty() &&
         std::find(document.layers.begin(), document.layers.end(), shape.layer) == document.layers.end())

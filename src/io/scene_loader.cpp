@@ -25,10 +25,6 @@ std::string lowerCased(std::string text) {
 
 std::string extensionOf(const std::string& path) { return lowerCased(fs::path(path).extension().string()); }
 
-bool isSceneLayer(const std::string& layer) {
-  return layer == "container" || layer == "fixed" || layer == "guides" || layer == "spines";
-}
-
 // Layers that never hold container or element art.
 bool isHelperLayer(const std::string& layer) {
   return layer == "fixed" || layer == "guides" || layer == "spines" || layer == "holes" || layer == "elements";

@@ -53,6 +53,20 @@ std::string lowerCased(std::string text) {
   return text;
 }
 
+// A group's layer name: lower-cased; Illustrator's de-duplicating suffix ("container_1_")
+// is dropped when what remains is a Pak layer name.
+std::string layerName(const std::string& raw) {
+  std::string name = lowerCased(raw);
+  const std::size_t end = name.size();
+  if (end >= 3 && name[end - 1] == '_') {
+    std::size_t digits = end - 1;
+    while (digits > 0 && std::isdigit(static_cast<unsigned char>(name[digits - 1]))) --digits;
+    if (digits < end - 1 && digits > 0 && name[digits - 1] == '_' && isKnownLayerName(name.substr(0, digits - 1)))
+      return name.substr(0, digits - 1);
+  }
+  return name;
+}
+
 template <class Range>
 std::string toString(const Range& range) {
   return std::string(boost::begin(range), boost::end(range));
@@ -472,8 +486,8 @@ class NodeContext {
   // The layer of a named group: the nearest ancestor named like a Pak layer wins, else the
   // outermost named group.
   void enterGroupLayer() {
-    const std::string label = lowerCased(inkscapeLabel(node_));
-    const std::string id = lowerCased(id_);
+    const std::string label = layerName(inkscapeLabel(node_));
+    const std::string id = layerName(id_);
     std::string name;
     if (isKnownLayerName(label)) name = label;
     else if (isKnownLayerName(id)) name = id;
@@ -889,6 +903,141 @@ void adoptSvgNamespace(XmlNode* root) {
   }
 }
 
+// ---------------------------------------------------------------------------------------
+// Stylesheets. Illustrator writes its colours as `<style>.cls-1{fill:#f00}</style>` with
+// class="cls-1" on the shapes; SVG++ reads only style="…". Rules with simple selectors
+// (tag, .class, #id, tag.class, *) are folded into each matching element's style
+// attribute, before its own declarations so that those still win, in order of
+// specificity. Other selectors (descendants, pseudo-classes, attributes) are ignored.
+struct CssRule {
+  std::string tag, cssClass, id;  // empty: any
+  int specificity = 0;
+  int order = 0;
+  std::string declarations;
+};
+
+std::string trimmed(std::string_view text) {
+  std::size_t begin = 0, end = text.size();
+  while (begin < end && std::isspace(static_cast<unsigned char>(text[begin]))) ++begin;
+  while (end > begin && std::isspace(static_cast<unsigned char>(text[end - 1]))) --end;
+  return std::string(text.substr(begin, end - begin));
+}
+
+std::optional<CssRule> simpleSelector(const std::string& selector) {
+  if (selector.empty() || selector.find_first_of(" \t\n>+~:[") != std::string::npos) return std::nullopt;
+  CssRule rule;
+  if (selector == "*") return rule;
+  std::size_t i = 0;
+  auto name = [&] {
+    const std::size_t start = i;
+    while (i < selector.size() && selector[i] != '.' && selector[i] != '#') ++i;
+    return selector.substr(start, i - start);
+  };
+  if (selector[0] != '.' && selector[0] != '#') {
+    rule.tag = name();
+    rule.specificity += 1;
+  }
+  while (i < selector.size()) {
+    const char kind = selector[i++];
+    const std::string value = name();
+    if (value.empty() || (kind == '.' && !rule.cssClass.empty()) || (kind == '#' && !rule.id.empty()))
+      return std::nullopt;  // a.b.c and the like: beyond these simple rules
+    if (kind == '.') { rule.cssClass = value; rule.specificity += 10; }
+    else { rule.id = value; rule.specificity += 100; }
+  }
+  return rule;
+}
+
+void parseStylesheet(std::string text, std::vector<CssRule>& rules) {
+  for (std::size_t start; (start = text.find("/*")) != std::string::npos;) {
+    const std::size_t end = text.find("*/", start + 2);
+    text.erase(start, end == std::string::npos ? std::string::npos : end + 2 - start);
+  }
+  std::size_t i = 0;
+  while (i < text.size()) {
+    const std::size_t open = text.find('{', i);
+    if (open == std::string::npos) break;
+    std::string selectors = trimmed(std::string_view(text).substr(i, open - i));
+    // Skip at-rules (@media …{…{…}}) as a whole block, counting braces.
+    std::size_t close = open + 1;
+    for (int depth = 1; close < text.size() && depth > 0; ++close) {
+      if (text[close] == '{') ++depth;
+      else if (text[close] == '}') --depth;
+    }
+    const std::string body = text.substr(open + 1, close - open - 2);
+    i = close;
+    if (selectors.empty() || selectors[0] == '@') continue;
+    std::size_t from = 0;
+    while (from <= selectors.size()) {
+      std::size_t comma = selectors.find(',', from);
+      if (comma == std::string::npos) comma = selectors.size();
+      if (auto rule = simpleSelector(trimmed(std::string_view(selectors).substr(from, comma - from)))) {
+        rule->declarations = trimmed(body);
+        rule->order = static_cast<int>(rules.size());
+        rules.push_back(std::move(*rule));
+      }
+      from = comma + 1;
+    }
+  }
+}
+
+bool hasClass(const std::string& classes, const std::string& wanted) {
+  std::istringstream words(classes);
+  for (std::string word; words >> word;)
+    if (word == wanted) return true;
+  return false;
+}
+
+template <class F>
+void forEachElement(XmlNode* root, F&& f) {
+  std::vector<XmlNode*> stack{root};
+  while (!stack.empty()) {
+    XmlNode* node = stack.back();
+    stack.pop_back();
+    if (node->type() != rapidxml_ns::node_element) continue;
+    f(node);
+    const std::size_t firstChild = stack.size();
+    for (XmlNode* child = node->first_node(); child; child = child->next_sibling()) stack.push_back(child);
+    std::reverse(stack.begin() + static_cast<std::ptrdiff_t>(firstChild), stack.end());  // document order
+  }
+}
+
+void applyStylesheets(rapidxml_ns::xml_document<char>& xml, XmlNode* root) {
+  std::vector<CssRule> rules;
+  forEachElement(root, [&](XmlNode* node) {
+    if (std::string_view(node->local_name(), node->local_name_size()) != "style") return;
+    std::string text;
+    for (XmlNode* child = node->first_node(); child; child = child->next_sibling())
+      if (child->type() == rapidxml_ns::node_data || child->type() == rapidxml_ns::node_cdata)
+        text.append(child->value(), child->value_size());
+    parseStylesheet(text, rules);
+  });
+  if (rules.empty()) return;
+  std::stable_sort(rules.begin(), rules.end(),
+                   [](const CssRule& a, const CssRule& b) { return a.specificity < b.specificity; });
+  forEachElement(root, [&](XmlNode* node) {
+    const std::string tag(node->local_name(), node->local_name_size());
+    const std::string classes = attributeOf(node, "class");
+    const std::string id = attributeOf(node, "id");
+    std::string style;
+    for (const CssRule& rule : rules)
+      if ((rule.tag.empty() || rule.tag == tag) && (rule.id.empty() || rule.id == id) &&
+          (rule.cssClass.empty() || hasClass(classes, rule.cssClass)))
+        style += rule.declarations + ";";
+    if (style.empty()) return;
+    rapidxml_ns::xml_attribute<char>* inline_ = nullptr;
+    for (auto* a = node->first_attribute(); a; a = a->next_attribute())
+      if (std::string_view(a->name(), a->name_size()) == "style") inline_ = a;
+    if (inline_) {
+      style.append(inline_->value(), inline_->value_size());
+      inline_->value(xml.allocate_string(style.c_str(), style.size()), style.size());
+    } else {
+      const char* value = xml.allocate_string(style.c_str(), style.size());
+      node->append_attribute(xml.allocate_attribute("style", value, 5, style.size()));
+    }
+  });
+}
+
 std::string parseErrorPlace(const std::vector<char>& buffer, const char* where) {
   if (!where || where < buffer.data() || where > buffer.data() + buffer.size())
     return "";
@@ -938,6 +1087,7 @@ SvgDocument readSvgString(const std::string& text, const std::string& name, cons
   if (rootName != "svg")
     throw InputError(name, "not an SVG document: the root element is <" + rootName + ">, not <svg>");
   adoptSvgNamespace(root);
+  applyStylesheets(xml, root);
 
   ReaderState state;
   state.file = name;

@@ -23,7 +23,18 @@ Drawing packingDrawing(const Scene& scene, const Packing& packing, const Packing
   drawing.width = scene.width;
   drawing.height = scene.height;
 
+  // A container drawn on a `container` layer keeps the artist's styling; a file that is a
+  // container by itself (an icon, a .path outline) is drawn as an outline, or its fill
+  // would hide the elements.
   DrawingGroup container{"container", "", {}, scene.containerShapes, {}};
+  double outlineWidth = 1.5 / packing.canonicalScale;
+  for (Shape& s : container.shapes)
+    if (s.layer != "container") {
+      s.stroke = s.fill ? *s.fill : (s.stroke ? *s.stroke : Color{});
+      s.stroke->alpha = 1.0;
+      s.fill.reset();
+      s.strokeWidth = outlineWidth;
+    }
   drawing.groups.push_back(std::move(container));
   if (!scene.fixed.empty()) drawing.groups.push_back({"fixed", "", {}, scene.fixed, {}});
 

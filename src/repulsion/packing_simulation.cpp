@@ -71,6 +71,7 @@ void PackingSimulation::finalize(const Box& area) {
   vertexNormal_.assign(n, {});
   segmentNormal_.assign(segmentMesh_.size(), {});
   meshCentre_.assign(meshes_.size(), {});
+  meshOnCorner_.assign(meshes_.size(), 0);
 
   // Springs by vertex: counting sort of both ends, in spring order (deterministic).
   springStart_.assign(n + 1, 0);
@@ -200,6 +201,69 @@ void PackingSimulation::computeForces(std::size_t vertexBegin, std::size_t verte
   }
 }
 
+std::vector<PackingSimulation::Corner> PackingSimulation::reflexCorners(const Region& input) {
+  Region region = input;
+  normalizeOrientation(region);  // interior on the left of every ring
+  std::vector<Corner> corners;
+  auto scan = [&](const Ring& ring) {
+    std::size_t n = ring.size();
+    for (std::size_t k = 0; k < n; ++k) {
+      Vec2 prev = ring[(k + n - 1) % n], here = ring[k], next = ring[(k + 1) % n];
+      Vec2 in = here - prev, out = next - here;
+      // A right turn with the interior on the left: the corner points into the region.
+      if (cross(in, out) >= -1e-12 * length(in) * length(out)) continue;
+      Vec2 outwardIn = normalized(Vec2{in.y, -in.x}), outwardOut = normalized(Vec2{out.y, -out.x});
+      corners.push_back({here, normalized(-(outwardIn + outwardOut))});
+    }
+  };
+  for (const Polygon& p : region) {
+    scan(p.outer);
+    for (const Ring& h : p.holes) scan(h);
+  }
+  return corners;
+}
+
+void PackingSimulation::applyCornerForces() {
+  std::fill(meshOnCorner_.begin(), meshOnCorner_.end(), 0);
+  const double cutoff2 = parameters_.cellSize * parameters_.cellSize;
+  for (const Corner& corner : corners_) {
+    const Vec2 c = corner.position;
+    // Nearest skin segment of each mesh near the corner (as in computeForces).
+    struct Hit { int mesh; double d2; int segment; double t; Vec2 point; };
+    Hit hits[kMaxNeighbours];
+    int count = 0;
+    grid_.forEachNear(c, 1, [&](int s) {
+      int m = segmentMesh_[s];
+      int a = segmentEnds_[2 * s], b = segmentEnds_[2 * s + 1];
+      double t;
+      Vec2 q = closestOnSegment(c, position_[a], position_[b], t);
+      double d2 = lengthSquared(c - q);
+      if (d2 > cutoff2) return;
+      int slot = 0;
+      while (slot < count && hits[slot].mesh != m) ++slot;
+      if (slot == count) {
+        if (count == kMaxNeighbours) return;
+        ++count;
+      } else if (d2 >= hits[slot].d2) {
+        return;
+      }
+      hits[slot] = {m, d2, s, t, q};
+    });
+    for (int k = 0; k < count; ++k) {
+      const Hit& h = hits[k];
+      if (meshes_[h.mesh].frozen) continue;
+      int a = segmentEnds_[2 * h.segment], b = segmentEnds_[2 * h.segment + 1];
+      Vec2 normal = h.t <= 0.0 ? vertexNormal_[a] : (h.t >= 1.0 ? vertexNormal_[b] : segmentNormal_[h.segment]);
+      if (dot(c - h.point, normal) >= 0.0) continue;  // corner outside this mesh
+      // Push the segment past the corner, shared between its ends by proximity.
+      Vec2 push = corner.inward * (parameters_.boundaryStrength * std::sqrt(h.d2));
+      force_[a] += push * (1.0 - h.t);
+      force_[b] += push * h.t;
+      meshOnCorner_[h.mesh] = 1;
+    }
+  }
+}
+
 void PackingSimulation::integrate(std::size_t vertexBegin, std::size_t vertexEnd) {
   const double dt = parameters_.timeStep, cap = parameters_.velocityCap;
   const double keep = 1.0 - parameters_.damping;
@@ -222,7 +286,7 @@ void PackingSimulation::updateMeshes(std::size_t meshBegin, std::size_t meshEnd)
       outside |= outsideContainer_[v] != 0;
     }
     mesh.overlapping = overlapping;
-    mesh.outside = outside;
+    mesh.outside = outside || meshOnCorner_[m] != 0;
     double twiceArea = 0.0;
     int nb = mesh.boundaryCount;
     for (int k = 0; k < nb; ++k) twiceArea += cross(position_[mesh.vertexBegin + k], position_[mesh.vertexBegin + (k + 1) % nb]);
@@ -234,6 +298,7 @@ void PackingSimulation::step() {
   grid_.rebuild(position_.data(), segmentEnds_.data(), segmentMesh_.size());
   pool_.parallelFor(meshes_.size(), 4, [this](std::size_t b, std::size_t e) { prepareSkins(b, e); });
   pool_.parallelFor(position_.size(), kVertexGrain, [this](std::size_t b, std::size_t e) { computeForces(b, e); });
+  applyCornerForces();
   pool_.parallelFor(position_.size(), kVertexGrain, [this](std::size_t b, std::size_t e) { integrate(b, e); });
   // Flags come from this step's force pass; areas from the new positions.
   updateMeshes(0, meshes_.size());

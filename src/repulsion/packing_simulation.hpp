@@ -51,6 +51,13 @@ class PackingSimulation {
   int addMesh(const ElementMesh& mesh, int type, Vec2 position, double angle, double growth, bool frozen = false);
   // Builds the adjacency tables and sizes the neighbour grid over `area`.
   void finalize(const Box& area);
+  // Reflex (inward-pointing) corners of the container: the boundary force acts on vertices
+  // only, so such a corner could poke into a mesh between two of its vertices. A corner found
+  // inside a mesh pushes the mesh's nearest skin segment off it along `inward` and blocks the
+  // mesh's growth. Computed by `reflexCorners`.
+  struct Corner { Vec2 position; Vec2 inward; };
+  void setContainerCorners(std::vector<Corner> corners) { corners_ = std::move(corners); }
+  static std::vector<Corner> reflexCorners(const Region& container);
 
   void step();
 
@@ -78,6 +85,7 @@ class PackingSimulation {
   void computeForces(std::size_t vertexBegin, std::size_t vertexEnd);
   void integrate(std::size_t vertexBegin, std::size_t vertexEnd);
   void updateMeshes(std::size_t meshBegin, std::size_t meshEnd);
+  void applyCornerForces();
 
   const RegionIndex& container_;
   double containerArea_;
@@ -104,6 +112,8 @@ class PackingSimulation {
   std::vector<int> segmentEnds_, segmentMesh_;
   std::vector<Vec2> segmentNormal_;
   std::vector<Vec2> meshCentre_;
+  std::vector<std::uint8_t> meshOnCorner_;  // a container corner is inside this mesh
+  std::vector<Corner> corners_;
   SegmentGrid grid_;
 
   // Build-time only.

@@ -50,6 +50,7 @@ void checkOptions(const RepulsionOptions& o) {
   positive(o.timeStep, "time step");
   positive(o.velocityCap, "velocity cap");
   positive(o.targetFill, "target fill");
+  if (!(o.outsideTolerance >= 0.0)) throw InputError("", "outside tolerance must not be negative");
   if (!(o.damping >= 0.0 && o.damping < 1.0)) throw InputError("", "damping must be in [0, 1)");
   if (o.meshSpacing < 0.0 || o.count < 0 || o.maxIterations < 0 || o.stallWindow < 1 || o.cellSize < 0.0)
     throw InputError("", "mesh spacing, count, cell size, max iterations and stall window must not be negative");
@@ -212,13 +213,13 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Repulsio
   parameters.velocityCap = options.velocityCap;
   parameters.damping = options.damping;
   parameters.growthRate = options.growthRate;
-  // A mesh pressed out of the container by more than this stops growing (see step()).
-  parameters.outsideTolerance = 0.05 * options.gap;
+  parameters.outsideTolerance = options.outsideTolerance;
   parameters.cellSize = options.cellSize > 0.0 ? options.cellSize : 2.0 * spacing;
 
   ThreadPool pool(options.threads);
   PackingSimulation sim(containerIndex, containerArea, parameters, pool);
   for (const Seed& s : seeds) sim.addMesh(types[s.type].mesh, s.type, s.position, s.angle, g0);
+  sim.setContainerCorners(PackingSimulation::reflexCorners(container));
   Box area = bounds(container);
   Vec2 margin{0.1 * kCanonicalSide, 0.1 * kCanonicalSide};
   area.add(area.min - margin);
@@ -237,7 +238,7 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Repulsio
   while (sim.iteration() < options.maxIterations) {
     sim.step();
     int it = sim.iteration();
-    history[static_cast<std::size_t>(it % (w + 1))] = sim.restFill();
+    history[static_cast<std::size_t>(it % (w + 1))] = options.stallOnMeasuredArea ? sim.fill() : sim.restFill();
     if (callbacks.onProgress && callbacks.progressEvery > 0 && it % callbacks.progressEvery == 0) report();
     if (callbacks.onSnapshot && callbacks.snapshotEvery > 0 && it % callbacks.snapshotEvery == 0)
       callbacks.onSnapshot(collectPacking(sim, types, frame, scene.container));

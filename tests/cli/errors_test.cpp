@@ -37,8 +37,10 @@ void expectInputError(const std::string& file, const std::string& expectedWords 
     EXPECT_EQ(run.exitCode, 2);
     EXPECT_TRUE(run.out.empty()) << run.out;
     ASSERT_EQ(run.errLines().size(), 1u);
-    EXPECT_EQ(run.err.rfind("pak: error: " + file + ": ", 0), 0u);
-    if (!expectedWords.empty()) EXPECT_NE(run.err.find(expectedWords), std::string::npos);
+    EXPECT_EQ(run.err.rfind("pak: error: " + file + ":", 0), 0u);
+    if (!expectedWords.empty()) {
+      EXPECT_NE(run.err.find(expectedWords), std::string::npos);
+    }
   }
   EXPECT_TRUE(fs::is_empty(out.path()));
 }

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -42,8 +44,9 @@ bool hasWarning(const std::vector<Warning>& warnings, const std::string& text) {
 class TempFolder {
  public:
   TempFolder() {
-    path_ = fs::temp_directory_path() / ("pak-io-test-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-                                         "-" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    // Unique per process and test: several builds may run their tests at once.
+    path_ = fs::temp_directory_path() / ("pak-io-test-" + std::to_string(::getpid()) + "-" +
+                                         ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(path_);
     fs::create_directories(path_);
   }

@@ -99,9 +99,9 @@ TEST(SharedData, RepulsionPakFilesHaveTheirPathCounts) {
       EXPECT_GT(area(filledRegion(shape)), 0.0);
     }
     if (key.rfind("animals/", 0) == 0 || key.rfind("small_cat/", 0) == 0) {
-      // The last path is the silhouette; the details lie inside it.
+      // The silhouette (last in the file, drawn first) covers the details.
       ElementArt element = elementFromDocument(document);
-      EXPECT_NEAR(area(element.outline), area(filledRegion(document.shapes.back())),
+      EXPECT_NEAR(area(element.outline), area(filledRegion(document.shapes.front())),
                   1e-6 * area(element.outline));
     }
   }
@@ -111,16 +111,18 @@ TEST(SharedData, AnimalsAreRedSilhouettesWithWhiteDetails) {
   SKIP_WITHOUT_SHARED_DATA();
   SvgDocument document = readPathFile((kSharedData / "repulsionpak" / "animals" / "cat.path").string());
   ASSERT_EQ(document.shapes.size(), 3u);
-  EXPECT_EQ(*document.shapes[0].fill, (Color{255, 255, 255, 1.0}));
-  EXPECT_EQ(*document.shapes[2].fill, (Color{240, 100, 101, 1.0}));
-  EXPECT_EQ(document.shapes[2].subpaths[0].points.size(), 160u);
+  // The file lists white, white, red; the red silhouette is drawn first, under the details.
+  EXPECT_EQ(*document.shapes[0].fill, (Color{240, 100, 101, 1.0}));
+  EXPECT_EQ(document.shapes[0].subpaths[0].points.size(), 160u);
+  EXPECT_EQ(*document.shapes[1].fill, (Color{255, 255, 255, 1.0}));
+  EXPECT_EQ(*document.shapes[2].fill, (Color{255, 255, 255, 1.0}));
 }
 
 TEST(SharedData, SnakeSilhouetteComesOutClosedAndFilled) {
   SKIP_WITHOUT_SHARED_DATA();
   SvgDocument document = readPathFile((kSharedData / "repulsionpak" / "animals" / "snake.path").string());
   ASSERT_EQ(document.shapes.size(), 3u);
-  const Shape& silhouette = document.shapes.back();
+  const Shape& silhouette = document.shapes.front();
   EXPECT_TRUE(silhouette.subpaths[0].closed);
   EXPECT_EQ(silhouette.subpaths[0].points.size(), 552u);  // 553 stored, the first repeated
   EXPECT_TRUE(silhouette.fill);

@@ -340,6 +340,27 @@ TEST(SvgReaderPaint, GradientBecomesTheMeanOfItsStops) {
   EXPECT_FALSE(document.warnings.empty());
 }
 
+TEST(SvgReaderPaint, StylesheetClassesLikeIllustratorWrites) {
+  SvgDocument document = read(R"~(<defs><style><![CDATA[
+        /* Illustrator's internal CSS */
+        .cls-1 { fill: #ff0000; }  #special{fill:#00ff00}
+        rect{stroke:#0000ff} g .ignored{fill:#123456} @media print { .cls-1 { fill: black } }
+        .cls-2, .cls-3 { fill-opacity: 0.5 }]]></style></defs>
+      <rect id="a" class="cls-1" width="1" height="1"/>
+      <rect id="special" class="cls-1" width="1" height="1"/>
+      <rect id="inline" class="cls-1" width="1" height="1" style="fill:#0000ff"/>
+      <rect id="attribute" class="cls-1 cls-3" width="1" height="1" fill="#ffff00"/>
+      <circle id="plain" class="ignored" r="1"/>)~");
+  ASSERT_EQ(document.shapes.size(), 5u);
+  EXPECT_EQ(*document.shapes[0].fill, (Color{255, 0, 0, 1.0}));
+  EXPECT_EQ(*document.shapes[0].stroke, (Color{0, 0, 255, 1.0}));
+  EXPECT_EQ(*document.shapes[1].fill, (Color{0, 255, 0, 1.0}));  // #id beats .class
+  EXPECT_EQ(*document.shapes[2].fill, (Color{0, 0, 255, 1.0}));  // style="…" beats the sheet
+  EXPECT_EQ(*document.shapes[3].fill, (Color{255, 0, 0, 0.5}));  // the sheet beats fill="…"
+  EXPECT_EQ(*document.shapes[4].fill, (Color{0, 0, 0, 1.0}));    // descendant selectors ignored
+  EXPECT_FALSE(document.shapes[4].stroke);
+}
+
 // ---- visibility, fill rules, structure ---------------------------------------------------
 
 TEST(SvgReaderVisibility, HiddenThingsAreSkipped) {
@@ -413,6 +434,14 @@ TEST(SvgReaderLayers, ByIdAndInkscapeLabelCaseInsensitive) {
   EXPECT_EQ(document.shapes[4].layer, "");
   EXPECT_EQ(document.shapes[4].topGroup, -1);
   EXPECT_EQ(document.layers, (std::vector<std::string>{"container", "fixed", "artwork", "guides"}));
+}
+
+TEST(SvgReaderLayers, IllustratorSuffixesAreDropped) {
+  SvgDocument document = read(R"~(<g id="Container_1_"><rect width="1" height="1"/></g>
+      <g id="Leaf_2_"><rect width="1" height="1"/></g>)~");
+  ASSERT_EQ(document.shapes.size(), 2u);
+  EXPECT_EQ(document.shapes[0].layer, "container");
+  EXPECT_EQ(document.shapes[1].layer, "leaf_2_");  // only Pak's own layer names are tidied
 }
 
 TEST(SvgReaderNamespaces, FilesWithoutXmlnsOrWithIllustratorEntitiesStillRead) {

@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "pak/clipping.hpp"
+#include "pak/error.hpp"
 #include "pak/packing_drawing.hpp"
 #include "pak/scene_loader.hpp"
 #include "pak/svg_writer.hpp"
@@ -43,7 +44,7 @@ RepulsionOptions quickOptions() {
   RepulsionOptions o;
   o.gap = 16.0;
   o.count = 10;
-  o.targetFill = 0.55;
+  o.targetFill = 0.45;
   o.maxIterations = 6000;
   o.seed = 3;
   return o;
