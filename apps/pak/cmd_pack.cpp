@@ -140,8 +140,9 @@ int runPack(PackArguments& args) {
     callbacks.progressEvery = args.progressEvery > 0 ? args.progressEvery : (tty ? 50 : 1000);
     callbacks.onProgress = [&](const RepulsionProgress& p) {
       double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
-      std::fprintf(stderr, "%spak pack: iteration %6d  fill %.3f  growing %3d/%d  %s%s", tty ? "\r" : "", p.iteration,
-                   p.fill, p.growing, p.elements, formatSeconds(elapsed).c_str(), tty ? "   " : "\n");
+      std::fprintf(stderr, "%spak pack: iteration %6d  fill %.3f  growing %3d/%d (blocked: %d by neighbours, %d by the wall)  %s%s",
+                   tty ? "\r" : "", p.iteration, p.fill, p.growing, p.elements, p.touchingNeighbours, p.againstWall,
+                   formatSeconds(elapsed).c_str(), tty ? "   " : "\n");
       std::fflush(stderr);
     };
   }

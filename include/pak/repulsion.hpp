@@ -59,6 +59,8 @@ struct RepulsionProgress {
   double fill = 0.0;   // skin area / container area
   int growing = 0;     // elements still allowed to grow
   int elements = 0;
+  int touchingNeighbours = 0;  // not growing: a vertex inside another element's mesh
+  int againstWall = 0;         // not growing: pushed out of the container
 };
 
 struct RepulsionCallbacks {

@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "pak/error.hpp"
+#include "pak/text_file.hpp"
 
 namespace pak {
 namespace {
@@ -258,14 +259,7 @@ SvgDocument readPathString(const std::string& text, const std::string& name) {
 }
 
 SvgDocument readPathFile(const std::string& path) {
-  std::error_code error;
-  if (std::filesystem::is_directory(path, error)) throw InputError(path, "is a folder, not a file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, "cannot open the file (missing or unreadable)");
-  std::ostringstream contents;
-  contents << in.rdbuf();
-  if (in.bad()) throw InputError(path, "cannot read the file");
-  return readPathString(contents.str(), path);
+  return readPathString(readTextFile(path), path);
 }
 
 }  // namespace pak

@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "pak/error.hpp"
+#include "pak/text_file.hpp"
 
 namespace pak {
 namespace {
@@ -1146,14 +1147,7 @@ SvgDocument readSvgString(const std::string& text, const std::string& name, cons
 }
 
 SvgDocument readSvgFile(const std::string& path, const SvgReadOptions& options) {
-  std::error_code error;
-  if (std::filesystem::is_directory(path, error)) throw InputError(path, "is a folder, not a file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, "cannot open the file (missing or unreadable)");
-  std::ostringstream contents;
-  contents << in.rdbuf();
-  if (in.bad()) throw InputError(path, "cannot read the file");
-  return readSvgString(contents.str(), path, options);
+  return readSvgString(readTextFile(path), path, options);
 }
 
 }  // namespace pak

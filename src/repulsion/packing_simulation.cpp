@@ -10,7 +10,6 @@ namespace pak {
 namespace {
 
 constexpr std::size_t kVertexGrain = 256;
-constexpr int kMaxNeighbours = 24;
 
 inline Vec2 closestOnSegment(Vec2 p, Vec2 a, Vec2 b, double& t) {
   Vec2 ab = b - a;
@@ -133,10 +132,35 @@ void PackingSimulation::prepareSkins(std::size_t meshBegin, std::size_t meshEnd)
   }
 }
 
+int PackingSimulation::nearestSkinPoints(Vec2 p, int excludeMesh, SkinHit* hits) const {
+  const double cutoff2 = parameters_.cellSize * parameters_.cellSize;
+  int count = 0;
+  grid_.forEachNear(p, 1, [&](int s) {
+    int mesh = segmentMesh_[s];
+    if (mesh == excludeMesh) return;
+    int a = segmentEnds_[2 * s], b = segmentEnds_[2 * s + 1];
+    double t;
+    Vec2 q = closestOnSegment(p, position_[a], position_[b], t);
+    double d2 = lengthSquared(p - q);
+    if (d2 > cutoff2) return;
+    int slot = 0;
+    while (slot < count && hits[slot].mesh != mesh) ++slot;
+    if (slot == count) {
+      if (count == kMaxNeighbours) return;
+      ++count;
+    } else if (d2 >= hits[slot].d2) {
+      return;
+    }
+    // The side test needs the normal at the closest feature: a vertex's pseudo-normal at the
+    // segment's ends, else the segment's own.
+    Vec2 normal = t <= 0.0 ? vertexNormal_[a] : (t >= 1.0 ? vertexNormal_[b] : segmentNormal_[s]);
+    hits[slot] = {mesh, s, t, d2, q, normal};
+  });
+  return count;
+}
+
 void PackingSimulation::computeForces(std::size_t vertexBegin, std::size_t vertexEnd) {
   const SimulationParameters& P = parameters_;
-  const double cutoff2 = P.cellSize * P.cellSize;
-  struct Neighbour { int mesh; double d2; Vec2 point; Vec2 normal; };
   for (std::size_t v = vertexBegin; v < vertexEnd; ++v) {
     const int m = meshOf_[v];
     const MeshInstance& mesh = meshes_[m];
@@ -145,30 +169,10 @@ void PackingSimulation::computeForces(std::size_t vertexBegin, std::size_t verte
     Vec2 f;
 
     // Closest skin point of each neighbouring mesh within the cut-off.
-    Neighbour near[kMaxNeighbours];
-    int nearCount = 0;
-    grid_.forEachNear(x, 1, [&](int s) {
-      int other = segmentMesh_[s];
-      if (other == m) return;
-      int a = segmentEnds_[2 * s], b = segmentEnds_[2 * s + 1];
-      double t;
-      Vec2 q = closestOnSegment(x, position_[a], position_[b], t);
-      double d2 = lengthSquared(x - q);
-      if (d2 > cutoff2) return;
-      int slot = 0;
-      while (slot < nearCount && near[slot].mesh != other) ++slot;
-      if (slot == nearCount) {
-        if (nearCount == kMaxNeighbours) return;
-        near[nearCount++] = {other, d2, q, {}};
-      } else if (d2 >= near[slot].d2) {
-        return;
-      }
-      near[slot].d2 = d2;
-      near[slot].point = q;
-      near[slot].normal = t <= 0.0 ? vertexNormal_[a] : (t >= 1.0 ? vertexNormal_[b] : segmentNormal_[s]);
-    });
+    SkinHit near[kMaxNeighbours];
+    const int nearCount = nearestSkinPoints(x, m, near);
     bool inside = false;
-    for (int k = 0; k < nearCount && !inside; ++k) inside = dot(x - near[k].point, near[k].normal) < 0.0;
+    for (int k = 0; k < nearCount && !inside; ++k) inside = near[k].contains(x);
     if (inside) {
       // Eq. 4.4: no repulsion; every incident triangle pulls the vertex toward its centroid.
       for (int k = triangleStart_[v]; k < triangleStart_[v + 1]; ++k) {
@@ -225,36 +229,14 @@ std::vector<PackingSimulation::Corner> PackingSimulation::reflexCorners(const Re
 
 void PackingSimulation::applyCornerForces() {
   std::fill(meshOnCorner_.begin(), meshOnCorner_.end(), 0);
-  const double cutoff2 = parameters_.cellSize * parameters_.cellSize;
   for (const Corner& corner : corners_) {
     const Vec2 c = corner.position;
-    // Nearest skin segment of each mesh near the corner (as in computeForces).
-    struct Hit { int mesh; double d2; int segment; double t; Vec2 point; };
-    Hit hits[kMaxNeighbours];
-    int count = 0;
-    grid_.forEachNear(c, 1, [&](int s) {
-      int m = segmentMesh_[s];
-      int a = segmentEnds_[2 * s], b = segmentEnds_[2 * s + 1];
-      double t;
-      Vec2 q = closestOnSegment(c, position_[a], position_[b], t);
-      double d2 = lengthSquared(c - q);
-      if (d2 > cutoff2) return;
-      int slot = 0;
-      while (slot < count && hits[slot].mesh != m) ++slot;
-      if (slot == count) {
-        if (count == kMaxNeighbours) return;
-        ++count;
-      } else if (d2 >= hits[slot].d2) {
-        return;
-      }
-      hits[slot] = {m, d2, s, t, q};
-    });
+    SkinHit hits[kMaxNeighbours];
+    const int count = nearestSkinPoints(c, -1, hits);
     for (int k = 0; k < count; ++k) {
-      const Hit& h = hits[k];
-      if (meshes_[h.mesh].frozen) continue;
+      const SkinHit& h = hits[k];
+      if (meshes_[h.mesh].frozen || !h.contains(c)) continue;
       int a = segmentEnds_[2 * h.segment], b = segmentEnds_[2 * h.segment + 1];
-      Vec2 normal = h.t <= 0.0 ? vertexNormal_[a] : (h.t >= 1.0 ? vertexNormal_[b] : segmentNormal_[h.segment]);
-      if (dot(c - h.point, normal) >= 0.0) continue;  // corner outside this mesh
       // Push the segment past the corner, shared between its ends by proximity.
       Vec2 push = corner.inward * (parameters_.boundaryStrength * std::sqrt(h.d2));
       force_[a] += push * (1.0 - h.t);

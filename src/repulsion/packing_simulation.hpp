@@ -87,6 +87,16 @@ class PackingSimulation {
   void updateMeshes(std::size_t meshBegin, std::size_t meshEnd);
   void applyCornerForces();
 
+  // The closest skin point of each mesh (other than `excludeMesh`) within the cut-off of p.
+  static constexpr int kMaxNeighbours = 24;
+  struct SkinHit {
+    int mesh, segment;
+    double t, d2;
+    Vec2 point, normal;  // outward normal at the closest feature
+    bool contains(Vec2 p) const { return dot(p - point, normal) < 0.0; }
+  };
+  int nearestSkinPoints(Vec2 p, int excludeMesh, SkinHit* hits) const;
+
   const RegionIndex& container_;
   double containerArea_;
   SimulationParameters parameters_;

@@ -232,8 +232,13 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Repulsio
   std::vector<double> history(static_cast<std::size_t>(w) + 1, 0.0);
   StopReason reason = StopReason::IterationCap;
   auto report = [&] {
-    if (callbacks.onProgress)
-      callbacks.onProgress({sim.iteration(), sim.fill(), sim.growingCount(), static_cast<int>(sim.meshes().size())});
+    if (!callbacks.onProgress) return;
+    RepulsionProgress progress{sim.iteration(), sim.fill(), sim.growingCount(), static_cast<int>(sim.meshes().size())};
+    for (const MeshInstance& m : sim.meshes()) {
+      progress.touchingNeighbours += m.overlapping ? 1 : 0;
+      progress.againstWall += (!m.overlapping && m.outside) ? 1 : 0;
+    }
+    callbacks.onProgress(progress);
   };
   while (sim.iteration() < options.maxIterations) {
     sim.step();

@@ -3,8 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <numbers>
 
+#include "pak/scene_loader.hpp"
 #include "pak/verify.hpp"
 
 using namespace pak;
@@ -96,4 +98,50 @@ TEST(ElementMesh, SeparatePiecesBecomeOneSkin) {
   EXPECT_TRUE(pointInPolygon({10, 10}, skin));
   EXPECT_TRUE(pointInPolygon({40, 10}, skin));
   EXPECT_TRUE(skin.holes.empty());
+}
+
+namespace {
+
+// Meshes every element of a library at a typical packing size (skin area about 20,000 in
+// canonical units, as for 30 elements in a 1000-wide container) and checks the invariants.
+void expectEveryElementMeshes(const Library& library) {
+  ASSERT_FALSE(library.empty());
+  for (const ElementArt& e : library) {
+    double scale = std::sqrt(15000.0 / area(e.outline));
+    Vec2 c = centroid(e.outline);
+    std::vector<Shape> art = e.shapes;
+    for (Shape& s : art)
+      for (Subpath& sub : s.subpaths)
+        for (Vec2& p : sub.points) p = (p - c) * scale;
+    ElementMeshOptions options;
+    options.gap = 10.0;
+    options.spacing = 14.0;
+    ElementMesh m = buildElementMesh(art, transformed(e.outline, scale, -c * scale), options);
+    MeshCheck check = verifyMesh(m.mesh);
+    EXPECT_TRUE(check.ok) << e.source << ": " << (check.problems.empty() ? "" : check.problems.front());
+    EXPECT_GE(m.boundaryCount, 3) << e.source;
+    EXPECT_GT(m.skinArea, m.artArea) << e.source;  // the skin encloses the art plus a margin
+    EXPECT_EQ(m.bindings.size(), [&] {
+      std::size_t n = 0;
+      for (const Shape& s : art)
+        for (const Subpath& sub : s.subpaths) n += sub.points.size();
+      return n;
+    }()) << e.source;
+  }
+}
+
+}  // namespace
+
+TEST(ElementMesh, EveryBundledExampleElementMeshes) {
+  expectEveryElementMeshes(loadLibrary({std::string(PAK_SOURCE_DIR) + "/examples/elements"}));
+}
+
+TEST(ElementMesh, EverySharedDataElementMeshes) {
+  const std::string data = PAK_SHARED_DATA_DIR;
+  if (!std::filesystem::exists(data)) GTEST_SKIP() << "shared data not found at " << data;
+  expectEveryElementMeshes(loadLibrary({data + "/repulsionpak/animals", data + "/repulsionpak/small_cat"}));
+  Library mdi;
+  for (const auto& entry : std::filesystem::directory_iterator(data + "/mdi"))
+    if (entry.path().extension() == ".svg") mdi.push_back(loadLibrary({entry.path().string()}).front());
+  expectEveryElementMeshes(mdi);
 }

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 using namespace pak;
 
 namespace {
@@ -116,4 +118,49 @@ TEST(PackingSimulation, FrozenMeshDoesNotMove) {
   for (int v = 0; v < 4; ++v) EXPECT_EQ(sim.positions()[v], frozen[v]);
   EXPECT_DOUBLE_EQ(sim.meshes()[0].growth, 1.0);
   EXPECT_GT(sim.meshes()[1].growth, 1.0);
+}
+
+TEST(PackingSimulation, ReflexCornersOfAnLShapePointInward) {
+  // L-shape: one reflex corner at (50, 50); it points into the region, away from the missing
+  // quadrant (x > 50, y > 50), along (-1, -1)/√2.
+  Region l = {Polygon{{{0, 0}, {100, 0}, {100, 50}, {50, 50}, {50, 100}, {0, 100}}, {}}};
+  auto corners = PackingSimulation::reflexCorners(l);
+  ASSERT_EQ(corners.size(), 1u);
+  EXPECT_EQ(corners[0].position, (Vec2{50, 50}));
+  EXPECT_NEAR(corners[0].inward.x, -std::sqrt(0.5), 1e-12);
+  EXPECT_NEAR(corners[0].inward.y, -std::sqrt(0.5), 1e-12);
+  // A convex square has none; a square hole's four corners all point into the region.
+  EXPECT_TRUE(PackingSimulation::reflexCorners(box(100)).empty());
+  Region withHole = {Polygon{{{0, 0}, {100, 0}, {100, 100}, {0, 100}}, {{{40, 40}, {60, 40}, {60, 60}, {40, 60}}}}};
+  EXPECT_EQ(PackingSimulation::reflexCorners(withHole).size(), 4u);
+}
+
+TEST(PackingSimulation, ReflexCornerInsideAMeshPushesItOffAndBlocksGrowth) {
+  Region l = {Polygon{{{0, 0}, {100, 0}, {100, 50}, {50, 50}, {50, 100}, {0, 100}}, {}}};
+  RegionIndex index(l, 5.0);
+  ThreadPool pool(1);
+  SimulationParameters p;
+  p.cellSize = 20.0;
+  PackingSimulation sim(index, area(l), p, pool);
+  ElementMesh diamond;
+  diamond.mesh.vertices = {{0, -8}, {8, 0}, {0, 8}, {-8, 0}};
+  diamond.mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
+  diamond.boundaryCount = 4;
+  for (auto [a, b] : {std::pair{0, 1}, {1, 2}, {2, 3}, {3, 0}, {0, 2}})
+    diamond.springs.push_back({a, b, distance(diamond.mesh.vertices[a], diamond.mesh.vertices[b]), SpringKind::Edge});
+  diamond.skinArea = 128.0;
+  // Centred at (47, 47): vertices (47, 39), (55, 47), (47, 55), (39, 47) are all inside the L,
+  // but the edge from (55, 47) to (47, 55) passes outside, around the corner (50, 50).
+  sim.addMesh(diamond, 0, {47, 47}, 0.0, 1.0);
+  sim.setContainerCorners(PackingSimulation::reflexCorners(l));
+  sim.finalize(area(100));
+  for (int v = 0; v < 4; ++v) EXPECT_TRUE(pointInRegion(sim.positions()[v], l));
+  sim.step();
+  EXPECT_TRUE(sim.meshes()[0].outside);           // growth blocked
+  EXPECT_DOUBLE_EQ(sim.meshes()[0].growth, 1.0);
+  EXPECT_LT(sim.forces()[1].x + sim.forces()[2].x, 0.0);  // the crossing edge is pushed back
+  for (int i = 0; i < 300; ++i) sim.step();
+  // Pushed off: the corner is no longer inside the mesh.
+  Ring skin(sim.positions().begin(), sim.positions().begin() + 4);
+  EXPECT_FALSE(pointInRing({50, 50}, skin));
 }
