@@ -54,3 +54,21 @@ PY
     echo "$line" | tee -a "$csv"
   done
 done
+
+# Metrics: all three curves (100 radii, 1000 × 1000 grid) of each packing written above.
+mcsv=bench/metrics-results.csv
+mheader="date,commit,packing,elements,radii,grid,wall_s_median"
+[ -f "$mcsv" ] || echo "$mheader" > "$mcsv"
+echo "$mheader"
+for entry in "${scenes[@]}"; do
+  name=${entry%%|*}
+  walls=()
+  for run in $(seq "$runs"); do
+    start=$(date +%s.%N)
+    "$pak" metrics "$work/$name.svg" --report "$work/$name.json" --radii 100 --grid 1000 --json "$work/$name-metrics.json" > /dev/null
+    walls+=("$(python3 -c "import sys; print(float(sys.argv[2]) - float(sys.argv[1]))" "$start" "$(date +%s.%N)")")
+  done
+  elements=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["element-count"])' "$work/$name.json")
+  wall=$(python3 -c 'import statistics,sys; print(f"{statistics.median(float(w) for w in sys.argv[1:]):.3f}")' "${walls[@]}")
+  echo "$stamp,$commit,$name,$elements,100,1000,$wall" | tee -a "$mcsv"
+done

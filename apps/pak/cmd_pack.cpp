@@ -5,20 +5,18 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 #include <thread>
 
 #include "command.hpp"
 #include "pak/atomic_file.hpp"
-#include "pak/clipping.hpp"
 #include "pak/error.hpp"
 #include "pak/packing_drawing.hpp"
 #include "pak/png_renderer.hpp"
 #include "pak/repulsion.hpp"
 #include "pak/scene_loader.hpp"
 #include "pak/svg_writer.hpp"
+#include "pak/text_file.hpp"
 #include "pak/verify.hpp"
 
 namespace pak::cli {
@@ -78,16 +76,20 @@ struct PackArguments {
 };
 
 void applyConfig(PackArguments& args) {
-  std::ifstream in(args.config);
-  if (!in) throw InputError(args.config, "cannot read config file");
   nlohmann::json json;
   try {
-    in >> json;
+    json = nlohmann::json::parse(readTextFile(args.config));
+  } catch (const InputError&) {
+    throw;
   } catch (const std::exception& e) {
     throw InputError(args.config, std::string("not valid JSON: ") + e.what());
   }
   if (!json.is_object()) throw InputError(args.config, "expected a JSON object of option names to values");
   for (auto& [key, value] : json.items()) {
+    bool isOption = key == "seed" || key == "stall-on-measured-area";
+    for (const auto& o : kNumberOptions) isOption |= key == o.name;
+    for (const auto& o : kIntegerOptions) isOption |= key == o.name;
+    if (!isOption) throw InputError(args.config, "unknown option \"" + key + "\"");
     // Flags given on the command line win over the file.
     if (args.command->count("--" + key) > 0) continue;
     bool known = false;
@@ -174,12 +176,7 @@ int runPack(PackArguments& args) {
   }
 
   // Invariants of the result, on the art as drawn.
-  std::vector<Region> outlines;
-  for (const PlacedElement& e : packing.elements) {
-    std::vector<Region> painted;
-    for (const Shape& s : e.art) painted.push_back(paintedRegion(s));
-    outlines.push_back(unite(painted));
-  }
+  std::vector<Region> outlines = artOutlines(packing);
   double containerArea = area(packing.container);
   PackingCheckOptions checkOptions;
   checkOptions.areaTolerance = 1e-6 * containerArea;

@@ -33,6 +33,8 @@ struct Shape {
   std::string tag;               // "path", "rect", … or "path-file" for .path input
   std::string layer;             // lower-cased name of the enclosing layer ("" if none)
   int topGroup = -1;             // index of the enclosing top-level <g>, -1 if none
+  int layerGroup = -1;           // index of the enclosing direct child <g> of the layer's group
+                                 // (one packed element in Pak's output), -1 if none
 };
 
 // The region the shape's fill covers (fill rule applied; open subpaths closed, as SVG does).

@@ -100,7 +100,9 @@ struct Packing {
 Packing packRepulsion(const Scene& scene, const Library& library, const RepulsionOptions& options = {},
                       const RepulsionCallbacks& callbacks = {});
 
-// Art area of each placed element (union of what it paints) over the container area.
+// What each placed element paints, as one region per element (the union of its shapes).
+std::vector<Region> artOutlines(const Packing& packing);
+// Total painted area of the elements over the container area.
 double artFill(const Packing& packing);
 
 }  // namespace pak

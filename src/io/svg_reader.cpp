@@ -329,12 +329,14 @@ class NodeContext {
         nonRendered_(parent.nonRendered_),
         layer_(parent.layer_),
         layerKnown_(parent.layerKnown_),
-        topGroup_(parent.topGroup_) {
+        topGroup_(parent.topGroup_),
+        layerGroup_(parent.layerGroup_) {
     tag_ = std::string(node->local_name(), node->local_name_size());
     id_ = attributeOf(node, "id");
     if (tag_ == "defs") nonRendered_ = true;
     if (tag_ == "g") {
       if (parent.isRoot_) topGroup_ = state_->topLevelGroups++;
+      if (parent.isLayerGroup_) layerGroup_ = parent.childGroups_++;
       enterGroupLayer();
     }
     state_->currentElement = describe();
@@ -481,6 +483,9 @@ class NodeContext {
   std::string layer_;
   bool layerKnown_ = false;
   int topGroup_ = -1;
+  int layerGroup_ = -1;       // see Shape::layerGroup
+  bool isLayerGroup_ = false; // this group names the layer: its child groups are numbered
+  int childGroups_ = 0;
   bool isRoot_ = false;
 
  private:
@@ -499,6 +504,8 @@ class NodeContext {
       if (known || !layerKnown_) {
         layer_ = name;
         layerKnown_ = known;
+        isLayerGroup_ = true;
+        layerGroup_ = -1;
         auto& layers = state_->document->layers;
         if (std::find(layers.begin(), layers.end(), name) == layers.end()) layers.push_back(name);
       }
@@ -610,6 +617,7 @@ class ShapeContext : public NodeContext {
     shape.tag = tag_;
     shape.layer = layer_;
     shape.topGroup = topGroup_;
+    shape.layerGroup = layerGroup_;
     pending.fill = style_.fill;
     pending.stroke = style_.stroke;
     pending.fillOpacity = style_.fillOpacity;

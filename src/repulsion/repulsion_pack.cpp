@@ -264,13 +264,19 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Repulsio
   return packing;
 }
 
-double artFill(const Packing& packing) {
-  double total = 0.0;
+std::vector<Region> artOutlines(const Packing& packing) {
+  std::vector<Region> outlines;
   for (const PlacedElement& e : packing.elements) {
     std::vector<Region> painted;
     for (const Shape& s : e.art) painted.push_back(paintedRegion(s));
-    total += area(unite(painted));
+    outlines.push_back(unite(painted));
   }
+  return outlines;
+}
+
+double artFill(const Packing& packing) {
+  double total = 0.0;
+  for (const Region& r : artOutlines(packing)) total += area(r);
   double a = area(packing.container);
   return a > 0.0 ? total / a : 0.0;
 }

@@ -19,17 +19,6 @@ namespace {
 const std::string kExamples = std::string(PAK_SOURCE_DIR) + "/examples";
 const std::string kData = PAK_SHARED_DATA_DIR;
 
-// Outline of each placed element's art, as drawn.
-std::vector<Region> artOutlines(const Packing& packing) {
-  std::vector<Region> outlines;
-  for (const PlacedElement& e : packing.elements) {
-    std::vector<Region> painted;
-    for (const Shape& s : e.art) painted.push_back(paintedRegion(s));
-    outlines.push_back(unite(painted));
-  }
-  return outlines;
-}
-
 void expectValidPacking(const Packing& packing) {
   PackingCheckOptions options;
   options.areaTolerance = 1e-5 * area(packing.container);

@@ -1,0 +1,270 @@
+// `pak metrics PACKING.svg…`: how even the negative space of packings is (thesis chapter 6):
+// a table on stdout, every curve as CSV/JSON, a comparison figure and offset images.
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "command.hpp"
+#include "pak/atomic_file.hpp"
+#include "pak/clipping.hpp"
+#include "pak/error.hpp"
+#include "pak/metrics.hpp"
+#include "pak/metrics_plot.hpp"
+#include "pak/offset_visualization.hpp"
+#include "pak/packing_reader.hpp"
+
+namespace pak::cli {
+namespace {
+
+using nlohmann::json;
+
+struct MetricsArgs {
+  std::vector<std::string> files;
+  std::optional<double> gap;
+  std::string report;
+  MetricsOptions metrics;
+  bool calibrate = false;
+  PackingReadOptions layers;
+  std::string csv, json, plot;
+  std::optional<double> visualize;
+  std::string visualizeOut;
+};
+
+std::string extensionOf(const std::string& path) {
+  std::string extension = std::filesystem::path(path).extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return extension;
+}
+
+// d_gap in the packing's units from a Pak report: an explicit "d_gap", else the canonical
+// gap of `pak pack` divided by the canonical units per input unit.
+double gapFromReport(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, "cannot read the report");
+  json report = json::parse(in, nullptr, /*allow_exceptions=*/false);
+  if (report.is_discarded() || !report.is_object()) throw InputError(path, "the report is not a JSON object");
+  if (report.contains("d_gap") && report["d_gap"].is_number()) return report["d_gap"].get<double>();
+  const json* gap = report.contains("parameters") && report["parameters"].is_object() &&
+                            report["parameters"].contains("gap")
+                        ? &report["parameters"]["gap"]
+                        : nullptr;
+  if (!gap || !gap->is_number() || !report.contains("canonical-scale") || !report["canonical-scale"].is_number())
+    throw InputError(path, "the report has neither \"d_gap\" nor \"parameters\".\"gap\" with \"canonical-scale\"");
+  double scale = report["canonical-scale"].get<double>();
+  if (!(scale > 0.0) || !std::isfinite(scale)) throw InputError(path, "\"canonical-scale\" must be positive");
+  return gap->get<double>() / scale;
+}
+
+double negativeRatio(const PackingGeometry& packing) {
+  double inside = area(intersect(unite(packing.elements), packing.container));
+  return 1.0 - inside / area(packing.container);
+}
+
+std::string fixed(double value, int decimals) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
+  return buffer;
+}
+
+std::string general(double value) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.6g", value);
+  return buffer;
+}
+
+json curveJson(const Curve& curve) { return {{"r", curve.r}, {"value", curve.value}}; }
+
+json packingJson(const PackingMetrics& m, const std::optional<double>& offset) {
+  json out = {{"file", m.source},
+              {"elements", m.elementCount},
+              {"container-area", m.containerArea},
+              {"positive-ratio", m.positiveRatio},
+              {"negative-ratio", m.negativeRatio},
+              {"d_gap", m.gap},
+              {"d_gap-estimated", m.gapEstimated},
+              {"Q-half-gap", m.contactAtHalfGap},
+              {"O-half-gap", m.overlapAtHalfGap},
+              {"largest-empty-radius", m.largestEmptyRadius},
+              {"curves",
+               {{"Q", curveJson(m.sphericalContact)},
+                {"H", curveJson(m.distanceHistogram)},
+                {"O", curveJson(m.overlap)},
+                {"Q-grid", curveJson(m.gridSphericalContact)}}},
+              {"histogram", {{"edges", m.binEdges}, {"density", m.binDensity}}}};
+  out["calibration-offset"] = offset ? json(*offset) : json(nullptr);
+  return out;
+}
+
+// Long format: one row per sample, so any tool can pivot it.
+std::string csvText(const std::vector<PackingMetrics>& all) {
+  std::ostringstream out;
+  out.precision(10);
+  out << "file,curve,r,value\n";
+  auto quoted = [](const std::string& text) {
+    std::string q = "\"";
+    for (char c : text) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return q + "\"";
+  };
+  for (const PackingMetrics& m : all) {
+    auto rows = [&](const char* name, const Curve& curve) {
+      for (std::size_t i = 0; i < curve.r.size() && i < curve.value.size(); ++i)
+        out << quoted(m.source) << "," << name << "," << curve.r[i] << "," << curve.value[i] << "\n";
+    };
+    rows("Q", m.sphericalContact);
+    rows("H", m.distanceHistogram);
+    rows("O", m.overlap);
+    rows("Q-grid", m.gridSphericalContact);
+    // Histogram bins by their left edge.
+    for (std::size_t i = 0; i + 1 < m.binEdges.size() && i < m.binDensity.size(); ++i)
+      out << quoted(m.source) << ",histogram," << m.binEdges[i] << "," << m.binDensity[i] << "\n";
+  }
+  return out.str();
+}
+
+std::string tableText(const std::vector<PackingMetrics>& all, const std::vector<std::optional<double>>& offsets,
+                      bool calibrated) {
+  std::vector<std::vector<std::string>> rows;
+  std::vector<std::string> header = {"file", "elements", "positive", "negative", "d_gap", "Q(d_gap/2)", "O(d_gap/2)",
+                                     "largest empty r"};
+  if (calibrated) header.push_back("offset");
+  rows.push_back(header);
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    const PackingMetrics& m = all[i];
+    std::vector<std::string> row = {m.source,
+                                    std::to_string(m.elementCount),
+                                    fixed(100.0 * m.positiveRatio, 2) + "%",
+                                    fixed(100.0 * m.negativeRatio, 2) + "%",
+                                    general(m.gap) + (m.gapEstimated ? " (est.)" : ""),
+                                    fixed(m.contactAtHalfGap, 5),
+                                    fixed(m.overlapAtHalfGap, 5),
+                                    general(m.largestEmptyRadius)};
+    if (calibrated) row.push_back(offsets[i] ? general(*offsets[i]) : "-");
+    rows.push_back(row);
+  }
+  std::vector<std::size_t> widths(header.size(), 0);
+  for (const auto& row : rows)
+    for (std::size_t c = 0; c < row.size(); ++c) widths[c] = std::max(widths[c], row[c].size());
+  std::ostringstream out;
+  for (const auto& row : rows) {
+    for (std::size_t c = 0; c < row.size(); ++c) {
+      // File names left-aligned, numbers right-aligned.
+      std::string cell = row[c];
+      std::string pad(widths[c] - cell.size(), ' ');
+      out << (c ? "  " : "") << (c == 0 ? cell + (c + 1 < row.size() ? pad : "") : pad + cell);
+    }
+    out << "\n";
+  }
+  return out.str();
+}
+
+// Several packings share one --visualize-out name: number them before the extension.
+std::string visualizationPath(const std::string& base, std::size_t index, std::size_t count) {
+  if (count == 1) return base;
+  std::filesystem::path path(base);
+  return (path.parent_path() / (path.stem().string() + "-" + std::to_string(index + 1) + path.extension().string()))
+      .string();
+}
+
+int runMetrics(MetricsArgs args) {
+  // Check the outputs before the (slow) measuring, so a typo fails at once.
+  if (!args.plot.empty() && extensionOf(args.plot) != ".png" && extensionOf(args.plot) != ".svg")
+    throw InputError(args.plot, "unknown plot format '" + extensionOf(args.plot) + "' (use .png or .svg)");
+  if (args.visualize.has_value() != !args.visualizeOut.empty())
+    throw InputError("", "--visualize R and --visualize-out FILE.png go together");
+  if (args.visualize && (!std::isfinite(*args.visualize) || *args.visualize < 0.0))
+    throw InputError("", "--visualize must be a non-negative offset");
+  if (!args.visualizeOut.empty() && extensionOf(args.visualizeOut) != ".png")
+    throw InputError(args.visualizeOut, "--visualize-out must be a .png file");
+
+  if (args.gap) args.metrics.gap = *args.gap;
+  else if (!args.report.empty()) args.metrics.gap = gapFromReport(args.report);
+
+  std::vector<PackingGeometry> packings;
+  for (const std::string& file : args.files) packings.push_back(readPacking(file, args.layers));
+
+  // Thesis 6.4: compare at the same negative-space ratio, here the packings' mean.
+  std::vector<std::optional<double>> offsets(packings.size());
+  if (args.calibrate) {
+    double mean = 0.0;
+    for (const PackingGeometry& p : packings) mean += negativeRatio(p);
+    mean /= static_cast<double>(packings.size());
+    for (std::size_t i = 0; i < packings.size(); ++i) {
+      Calibration calibration = calibrateNegativeSpace(packings[i], mean);
+      offsets[i] = calibration.offset;
+      packings[i] = std::move(calibration.calibrated);
+    }
+  }
+
+  std::vector<PackingMetrics> measured;
+  for (const PackingGeometry& p : packings) measured.push_back(measurePacking(p, args.metrics));
+
+  if (!args.csv.empty()) writeFileAtomically(args.csv, csvText(measured));
+  if (!args.json.empty()) {
+    json list = json::array();
+    for (std::size_t i = 0; i < measured.size(); ++i) list.push_back(packingJson(measured[i], offsets[i]));
+    writeFileAtomically(args.json, json{{"packings", list}}.dump(2) + "\n");
+  }
+  if (!args.plot.empty()) writeMetricsPlot(measured, args.plot);
+  if (args.visualize)
+    for (std::size_t i = 0; i < packings.size(); ++i)
+      writeOffsetVisualization(packings[i], *args.visualize, visualizationPath(args.visualizeOut, i, packings.size()));
+
+  std::cout << tableText(measured, offsets, args.calibrate) << std::flush;
+  return 0;
+}
+
+const CommandRegistrar registrar{Command{
+    "metrics", [](CLI::App& app) -> std::function<int()> {
+      auto args = std::make_shared<MetricsArgs>();
+      CLI::App* cmd = app.add_subcommand(
+          "metrics",
+          "Measure how even the negative space of packings is (thesis chapter 6): positive/negative "
+          "space ratios, the spherical contact probability Q(r), the distance histogram H(r) = -Q'(r), "
+          "the overlap function O(r), and Q and O at d_gap/2. Reads Pak's output (layers `container` "
+          "and `elements`), other layer names, or else takes the largest closed shape as the container "
+          "and each top-level group or shape as an element. Lengths are in the file's own units.");
+      cmd->add_option("files", args->files, "Packing SVG files to measure and compare")->required()->type_name("PACKING");
+      cmd->add_option("--gap", args->gap, "d_gap in the file's units (default: from --report, else estimated)")
+          ->type_name("D");
+      cmd->add_option("--report", args->report,
+                      "Pak report (pak pack --report) to read d_gap from: \"d_gap\", or \"parameters\".\"gap\" / "
+                      "\"canonical-scale\"")
+          ->type_name("FILE");
+      cmd->add_option("--radii", args->metrics.radii, "samples of r for Q, H and O (default: 100)")->type_name("N");
+      cmd->add_option("--grid", args->metrics.gridResolution,
+                      "distance-transform grid cells along the container's bounding square (default: 1000)")
+          ->type_name("N");
+      cmd->add_option("--bins", args->metrics.histogramBins, "bins of the discrete distance histogram (default: 50)")
+          ->type_name("N");
+      cmd->add_flag("--calibrate", args->calibrate,
+                    "offset every packing's elements uniformly to the packings' mean negative-space ratio first "
+                    "(thesis 6.4), and report the offset");
+      cmd->add_option("--container-layer", args->layers.containerLayer, "layer holding the container (default: container)")
+          ->type_name("NAME");
+      cmd->add_option("--elements-layer", args->layers.elementsLayer,
+                      "layer whose child groups are the elements (default: elements)")
+          ->type_name("NAME");
+      cmd->add_option("--csv", args->csv, "write every curve as CSV (file,curve,r,value)")->type_name("FILE");
+      cmd->add_option("--json", args->json, "write every quantity and curve as JSON")->type_name("FILE");
+      cmd->add_option("--plot", args->plot, "draw Q, H and O of all packings side by side (.png or .svg)")
+          ->type_name("FILE");
+      cmd->add_option("--visualize", args->visualize,
+                      "draw elements offset by R with overlaps in red (thesis Fig. 6.4); needs --visualize-out")
+          ->type_name("R");
+      cmd->add_option("--visualize-out", args->visualizeOut,
+                      "PNG for --visualize (numbered -1, -2 … for several packings)")
+          ->type_name("FILE.png");
+      return [args] { return runMetrics(*args); };
+    }}};
+
+}  // namespace
+}  // namespace pak::cli

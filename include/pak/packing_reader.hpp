@@ -1,0 +1,23 @@
+#pragma once
+// Reads any packing drawing as the geometry the metrics need: Pak's own output (a
+// `container` layer and an `elements` layer of <g class="element"> groups), a third party's
+// with other layer names, or, with neither layer, "the largest closed shape is the container
+// and each top-level group or shape inside it is an element".
+#include <string>
+
+#include "pak/metrics.hpp"
+#include "pak/svg_reader.hpp"
+
+namespace pak {
+
+struct PackingReadOptions {
+  std::string containerLayer = "container";  // matched lower-cased, like the reader's layers
+  std::string elementsLayer = "elements";
+};
+
+// Throws InputError when no container is found, there are no elements, or an element lies
+// entirely outside the container.
+PackingGeometry packingFromDocument(const SvgDocument& document, const PackingReadOptions& = {});
+PackingGeometry readPacking(const std::string& path, const PackingReadOptions& = {});
+
+}  // namespace pak

@@ -1,0 +1,91 @@
+// measurePacking: every quantity of thesis 6.3 for one packing, sharing one negative space.
+#include <algorithm>
+#include <cmath>
+
+#include "metrics_internal.hpp"
+#include "pak/error.hpp"
+
+namespace pak {
+namespace {
+
+std::vector<double> evenly(double hi, int count) {
+  std::vector<double> r(count);
+  for (int k = 0; k < count; ++k) r[k] = count > 1 ? hi * k / (count - 1) : 0.0;
+  return r;
+}
+
+void checkOptions(const PackingGeometry& packing, const MetricsOptions& o) {
+  if (o.radii < 2) throw InputError(packing.source, "metrics need at least 2 radii");
+  if (o.gridResolution < 2) throw InputError(packing.source, "grid resolution must be at least 2");
+  if (o.histogramBins < 1) throw InputError(packing.source, "histogram needs at least 1 bin");
+  if (!(o.gap >= 0.0) || !std::isfinite(o.gap))
+    throw InputError(packing.source, "gap must be a non-negative number");
+  if (!(o.overlapMaxRadius >= 0.0) || !std::isfinite(o.overlapMaxRadius))
+    throw InputError(packing.source, "overlap radius must be a non-negative number");
+}
+
+// H(r) = -Q'(r): central differences inside, one-sided at the ends.
+std::vector<double> negativeDerivative(const Curve& q) {
+  const std::size_t n = q.r.size();
+  std::vector<double> h(n, 0.0);
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t a = k > 0 ? k - 1 : k, b = k + 1 < n ? k + 1 : k;
+    const double dr = q.r[b] - q.r[a];
+    h[k] = dr > 0.0 ? -(q.value[b] - q.value[a]) / dr : 0.0;
+  }
+  return h;
+}
+
+}  // namespace
+
+PackingMetrics measurePacking(const PackingGeometry& packing, const MetricsOptions& options) {
+  using namespace metrics_internal;
+  checkOptions(packing, options);
+  const Frame frame = makeFrame(packing, options.arcTolerance);
+  const Region negative = negativeSpace(packing, frame);
+
+  PackingMetrics m;
+  m.source = packing.source;
+  m.containerArea = frame.containerArea;
+  m.elementCount = static_cast<int>(packing.elements.size());
+  m.negativeRatio = area(negative) / frame.containerArea;
+  m.positiveRatio = 1.0 - m.negativeRatio;
+  // The grid comes first: its largest distance brackets the exact bisection.
+  const GridDistances grid = gridDistances(packing, negative, frame, options.gridResolution);
+  const double gridLargest = grid.freeDistances.empty() ? 0.0 : grid.freeDistances.back();
+  m.largestEmptyRadius = largestEmptyRadius(packing, negative, frame, gridLargest, 2.0 * grid.cell);
+
+  m.sphericalContact =
+      contactCurve(packing, negative, frame, m.largestEmptyRadius, options.radii);
+  m.distanceHistogram.r = m.sphericalContact.r;
+  m.distanceHistogram.value = negativeDerivative(m.sphericalContact);
+
+  m.gapEstimated = !(options.gap > 0.0);
+  m.gap = m.gapEstimated ? gapFromCurve(m.sphericalContact) : options.gap;
+
+  const double overlapMax = options.overlapMaxRadius > 0.0 ? options.overlapMaxRadius : m.gap;
+  const std::vector<ElementPair> pairs = nearPairs(packing, std::max(overlapMax, 0.5 * m.gap));
+  m.overlap = overlapCurve(packing, pairs, frame, overlapMax, options.radii);
+
+  const double cells = static_cast<double>(std::max<long long>(grid.containerCells, 1));
+  const std::vector<double>& d = grid.freeDistances;
+  m.gridSphericalContact.r = m.sphericalContact.r;
+  for (double r : m.gridSphericalContact.r) {
+    const auto atLeast = d.end() - std::lower_bound(d.begin(), d.end(), r);
+    m.gridSphericalContact.value.push_back(static_cast<double>(atLeast) / cells);
+  }
+  const int bins = options.histogramBins;
+  // A degenerate packing with no empty disc still gets a unit-free, non-empty range.
+  const double top = m.largestEmptyRadius > 0.0 ? m.largestEmptyRadius : grid.cell;
+  const double width = top / bins;
+  m.binEdges = evenly(top, bins + 1);
+  m.binDensity.assign(bins, 0.0);
+  for (double v : d) m.binDensity[std::clamp(static_cast<int>(v / width), 0, bins - 1)] += 1.0;
+  for (double& b : m.binDensity) b /= cells * width;
+
+  m.contactAtHalfGap = erodedRatio(packing, negative, 0.5 * m.gap, frame);
+  m.overlapAtHalfGap = overlapRatio(packing, pairs, 0.5 * m.gap, frame);
+  return m;
+}
+
+}  // namespace pak

@@ -1,0 +1,83 @@
+// `pak pack` as a user runs it: output layout, report, snapshots, config errors.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "run_pak.hpp"
+
+using namespace pak::testing;
+
+namespace {
+const std::string kQuick = "pack -c examples/scene.svg -e examples/elements --count 6 --gap 20 --max-iterations 300 --quiet";
+
+int count(const std::string& text, const std::string& what) {
+  int n = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+}  // namespace
+
+TEST(CliPack, WritesTheOutputLayoutAndAReport) {
+  ScratchFolder dir("cli-pack");
+  PakRun run = runPak(kQuick + " -o " + shellQuoted(dir.file("out.svg")) + " --png " + shellQuoted(dir.file("out.png")) +
+                      " --report " + shellQuoted(dir.file("report.json")) + " --snapshots " +
+                      shellQuoted(dir.file("snaps")) + " --every 100");
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  EXPECT_TRUE(run.err.empty()) << run.err;  // --quiet
+  std::string svg = readWholeFile(dir.file("out.svg"));
+  EXPECT_EQ(count(svg, "<g id=\"container\""), 1);
+  EXPECT_EQ(count(svg, "<g id=\"elements\""), 1);
+  EXPECT_EQ(count(svg, "class=\"element\""), 6);
+  EXPECT_EQ(count(svg, "data-source=\""), 6);
+  EXPECT_EQ(count(svg, "id=\"skins\""), 0);  // debug layers only on request
+  EXPECT_TRUE(std::filesystem::file_size(dir.file("out.png")) > 1000);
+  auto report = nlohmann::json::parse(readWholeFile(dir.file("report.json")));
+  EXPECT_EQ(report["element-count"], 6);
+  EXPECT_EQ(report["iterations"], 300);
+  EXPECT_EQ(report["stop-reason"], "iteration-cap");
+  EXPECT_EQ(report["parameters"]["gap"], 20.0);
+  EXPECT_EQ(report["parameters"]["seed"], 1);
+  EXPECT_EQ(report["overlap-count"], 0);
+  for (const char* key : {"wall-seconds", "fill-ratio-art", "fill-ratio-skin", "vertex-count", "overlap-area"})
+    EXPECT_TRUE(report.contains(key)) << key;
+  for (const char* snap : {"snapshot-000100.svg", "snapshot-000200.svg", "snapshot-000300.svg"})
+    EXPECT_TRUE(std::filesystem::exists(dir.path() / "snaps" / snap)) << snap;
+}
+
+TEST(CliPack, DebugLayersAddSkinsAndMeshes) {
+  ScratchFolder dir("cli-pack-debug");
+  PakRun run = runPak(kQuick + " --max-iterations 10 --debug-layers -o " + shellQuoted(dir.file("out.svg")));
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  std::string svg = readWholeFile(dir.file("out.svg"));
+  EXPECT_EQ(count(svg, "<g id=\"skins\""), 1);
+  EXPECT_EQ(count(svg, "<g id=\"meshes\""), 1);
+}
+
+TEST(CliPack, ConfigFileSetsOptionsAndFlagsWin) {
+  ScratchFolder dir("cli-pack-config");
+  std::string config = dir.write("c.json", R"({"gap": 15, "count": 4, "max-iterations": 20})");
+  PakRun run = runPak("pack -c examples/scene.svg -e examples/elements -q --config " + shellQuoted(config) +
+                      " --count 3 -o " + shellQuoted(dir.file("o.svg")) + " --report " + shellQuoted(dir.file("r.json")));
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  auto report = nlohmann::json::parse(readWholeFile(dir.file("r.json")));
+  EXPECT_EQ(report["parameters"]["gap"], 15.0);
+  EXPECT_EQ(report["element-count"], 3);
+}
+
+TEST(CliPack, BadOptionsAreOneClearErrorLine) {
+  ScratchFolder dir("cli-pack-bad");
+  std::string out = shellQuoted(dir.file("o.svg"));
+  std::string unknown = dir.write("u.json", R"({"gapp": 1})");
+  std::string notJson = dir.write("n.json", "{gap:");
+  for (const std::string& args :
+       {"pack -c examples/scene.svg -e examples/elements -o " + out + " --gap -3",
+        "pack -c examples/scene.svg -e examples/elements -o " + out + " --config " + shellQuoted(unknown),
+        "pack -c examples/scene.svg -e examples/elements -o " + out + " --config " + shellQuoted(notJson),
+        "pack -c examples/scene.svg -e " + shellQuoted(dir.file("none")) + " -o " + out}) {
+    PakRun run = runPak(args);
+    EXPECT_EQ(run.exitCode, 2) << args;
+    ASSERT_EQ(run.errLines().size(), 1u) << args << "\n" << run.err;
+    EXPECT_EQ(run.errLines()[0].rfind("pak: error: ", 0), 0u) << run.err;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("o.svg"))) << args;
+  }
+}
