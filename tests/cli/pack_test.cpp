@@ -46,7 +46,8 @@ TEST(CliPack, WritesTheOutputLayoutAndAReport) {
 
 TEST(CliPack, DebugLayersAddSkinsAndMeshes) {
   ScratchFolder dir("cli-pack-debug");
-  PakRun run = runPak(kQuick + " --max-iterations 10 --debug-layers -o " + shellQuoted(dir.file("out.svg")));
+  PakRun run = runPak("pack -c examples/scene.svg -e examples/elements --count 6 --gap 20 --max-iterations 10 --quiet "
+                      "--debug-layers -o " + shellQuoted(dir.file("out.svg")));
   ASSERT_EQ(run.exitCode, 0) << run.err;
   std::string svg = readWholeFile(dir.file("out.svg"));
   EXPECT_EQ(count(svg, "<g id=\"skins\""), 1);
