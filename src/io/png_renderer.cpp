@@ -9,6 +9,7 @@
 #include <memory>
 #include <string>
 
+#include "cairo_output.hpp"
 #include "pak/atomic_file.hpp"
 #include "pak/error.hpp"
 
@@ -19,14 +20,9 @@ namespace {
 // (16384² × 4 bytes = 1 GiB), and inside cairo's 32767-pixel limit.
 constexpr int kMaxPixels = 16384;
 
-struct SurfaceDeleter {
-  void operator()(cairo_surface_t* surface) const { cairo_surface_destroy(surface); }
-};
-struct ContextDeleter {
-  void operator()(cairo_t* context) const { cairo_destroy(context); }
-};
-using SurfacePtr = std::unique_ptr<cairo_surface_t, SurfaceDeleter>;
-using ContextPtr = std::unique_ptr<cairo_t, ContextDeleter>;
+using cairo_output::appendToString;
+using cairo_output::ContextPtr;
+using cairo_output::SurfacePtr;
 
 // The drawing's box, or the bounds of what it draws when the box was left empty.
 Box drawingBox(const Drawing& drawing) {
@@ -102,10 +98,6 @@ void drawGroup(cairo_t* context, const DrawingGroup& group) {
   for (const DrawingGroup& child : group.children) drawGroup(context, child);
 }
 
-cairo_status_t appendToString(void* closure, const unsigned char* data, unsigned int length) {
-  static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
-  return CAIRO_STATUS_SUCCESS;
-}
 
 }  // namespace
 
