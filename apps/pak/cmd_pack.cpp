@@ -14,6 +14,7 @@
 #include "pak/packing_drawing.hpp"
 #include "pak/png_renderer.hpp"
 #include "pak/repulsion.hpp"
+#include "pak/repulsion_presets.hpp"
 #include "pak/scene_loader.hpp"
 #include "pak/svg_writer.hpp"
 #include "pak/text_file.hpp"
@@ -54,17 +55,24 @@ const NumberOption kNumberOptions[] = {
     {"cell-size", &RepulsionOptions::cellSize, "neighbour grid cell and repulsion reach, canonical units (0: 2 × mesh spacing)"},
     {"outside-tolerance", &RepulsionOptions::outsideTolerance, "a mesh pushed further than this outside the container stops growing (canonical units; 1e9: never, as in the thesis)"},
     {"stall-epsilon", &RepulsionOptions::stallEpsilon, "ε of eq. 4.7: stop when the RMS fill change per iteration falls below it"},
+    {"secondary-scale", &RepulsionOptions::secondaryScale, "nominal size of a secondary element relative to a primary one (linear)"},
+    {"secondary-min-distance", &RepulsionOptions::secondaryMinDistance, "d_min: secondaries go only where the negative space is at least this far from any element or wall (canonical units; 0: max(gap, L / 4), L the nominal secondary size)"},
+    {"secondary-separation", &RepulsionOptions::secondarySeparation, "d_sep: secondary seeds keep at least this far apart (canonical units; 0: L, the nominal secondary size)"},
+    {"secondary-target-fill", &RepulsionOptions::secondaryTargetFill, "the secondary pass stops when skins (and fixed elements) cover this fraction of the container"},
 };
 const IntegerOption kIntegerOptions[] = {
     {"count", &RepulsionOptions::count, "number of elements to seed (0: container area / element area)"},
     {"max-iterations", &RepulsionOptions::maxIterations, "hard cap on simulation iterations"},
     {"stall-window", &RepulsionOptions::stallWindow, "w of eq. 4.7, in iterations"},
     {"threads", &RepulsionOptions::threads, "worker threads (0: all cores); the result does not depend on it"},
+    {"secondary-resolution", &RepulsionOptions::secondaryResolution, "distance transform cells across the container for seeding secondaries"},
 };
 
 struct PackArguments {
   std::string container;
-  std::vector<std::string> elements;
+  std::vector<std::string> elements, secondary;
+  std::string preset;
+  bool rigid = false;
   std::string output, png, config, report, snapshots;
   int pngWidth = 1200;
   int every = 500;
@@ -128,11 +136,24 @@ std::string formatSeconds(double s) {
 int runPack(PackArguments& args) {
   using Clock = std::chrono::steady_clock;
   auto start = Clock::now();
+  // Preset strengths first; the config file and then command-line flags override them.
+  if (args.rigid && !args.preset.empty() && args.preset != "rigid")
+    throw InputError("", "--rigid conflicts with --preset " + args.preset);
+  if (args.rigid) args.preset = "rigid";
+  if (!args.preset.empty()) {
+    RepulsionOptions preset = args.options;
+    applyRepulsionPreset(args.preset, preset);
+    for (const auto& o : kNumberOptions)
+      if (args.command->count(std::string("--") + o.name) == 0) args.options.*o.field = preset.*o.field;
+    for (const auto& o : kIntegerOptions)
+      if (args.command->count(std::string("--") + o.name) == 0) args.options.*o.field = preset.*o.field;
+  }
   if (!args.config.empty()) applyConfig(args);
   args.options.seed = args.seed;
 
   Scene scene = loadScene(args.container);
   Library library = loadLibrary(args.elements);
+  Library secondaryLibrary = args.secondary.empty() ? Library{} : loadLibrary(args.secondary);
   for (const Warning& w : scene.warnings)
     if (!args.quiet) std::fprintf(stderr, "pak: warning: %s: %s\n", w.where.c_str(), w.message.c_str());
 
@@ -161,7 +182,7 @@ int runPack(PackArguments& args) {
   }
 
   auto simulationStart = Clock::now();
-  Packing packing = packRepulsion(scene, library, args.options, callbacks);
+  Packing packing = packRepulsion(scene, library, secondaryLibrary, args.options, callbacks);
   double simulationSeconds = std::chrono::duration<double>(Clock::now() - simulationStart).count();
   if (!args.quiet && tty) std::fprintf(stderr, "\n");
 
@@ -180,9 +201,19 @@ int runPack(PackArguments& args) {
   double containerArea = area(packing.container);
   PackingCheckOptions checkOptions;
   checkOptions.areaTolerance = 1e-6 * containerArea;
-  PackingCheck check = verifyPacking(outlines, packing.container, checkOptions);
-  double artArea = 0.0;
+  // Fixed elements count as one more (immovable) element: overlapping them is an overlap.
+  std::vector<Region> checked = outlines;
+  if (!packing.fixedArt.empty()) checked.push_back(packing.fixedArt);
+  PackingCheck check = verifyPacking(checked, packing.container, checkOptions);
+  double artArea = area(packing.fixedArt);
   for (const Region& r : outlines) artArea += area(r);
+  double maxEdgeStrain = 0.0, meanEdgeStrain = 0.0;
+  int secondaryCount = 0;
+  for (const PlacedElement& e : packing.elements) {
+    maxEdgeStrain = std::max(maxEdgeStrain, e.maxEdgeStrain);
+    meanEdgeStrain += e.meanEdgeStrain / static_cast<double>(packing.elements.size());
+    secondaryCount += e.secondary ? 1 : 0;
+  }
   double wall = std::chrono::duration<double>(Clock::now() - start).count();
 
   if (!args.quiet)
@@ -213,6 +244,28 @@ int runPack(PackArguments& args) {
     report["simulation-seconds"] = simulationSeconds;
     report["fill-ratio-art"] = artArea / containerArea;
     report["fill-ratio-skin"] = packing.skinFill;
+    report["fill-ratios-include"] = packing.fixedArt.empty()
+                                        ? "elements (art or skins) over the container area"
+                                        : "elements (art or skins) and fixed elements (art, or art offset by gap/2 for skin) over the container area";
+    report["preset"] = args.preset.empty() ? "default" : args.preset;
+    report["secondary-library"] = args.secondary;
+    report["secondary-count"] = secondaryCount;
+    report["fixed-count"] = scene.fixed.size();
+    report["fixed-area-ratio"] = area(packing.fixedArt) / containerArea;
+    report["max-edge-strain"] = maxEdgeStrain;    // over all edge springs: |length / (g × rest) − 1|
+    report["mean-edge-strain"] = meanEdgeStrain;  // mean over elements of their mean
+    nlohmann::json passes = nlohmann::json::array();
+    for (std::size_t k = 0; k < packing.passes.size(); ++k) {
+      const PackingPass& pass = packing.passes[k];
+      passes.push_back({{"pass", k == 0 ? "primary" : "secondary"},
+                        {"elements", pass.elements},
+                        {"iterations", pass.iterations},
+                        {"stop-reason", toString(pass.stopReason)},
+                        {"seconds", pass.seconds},
+                        {"fill-ratio-skin", pass.skinFill},
+                        {"fill-ratio-art", pass.artFill}});
+    }
+    report["passes"] = passes;
     report["element-count"] = packing.elements.size();
     report["vertex-count"] = packing.vertexCount;
     report["spring-count"] = packing.springCount;
@@ -237,6 +290,13 @@ const CommandRegistrar registrar{{"pack", [](CLI::App& app) {
   args->command = cmd;
   cmd->add_option("--container,-c", args->container, "scene or container file (.svg or .path)")->required();
   cmd->add_option("--elements,-e", args->elements, "element files and/or folders of .svg/.path files")->required();
+  cmd->add_option("--secondary", args->secondary,
+                  "secondary element files and/or folders: small elements packed into the pockets the primaries "
+                  "leave, in a second pass with the primaries frozen (thesis 4.6)");
+  std::string presetHelp = "force strength preset, applied before --config and flags:";
+  for (const RepulsionPreset& p : repulsionPresets()) presetHelp += "\n  " + p.name + ": " + p.description;
+  cmd->add_option("--preset", args->preset, presetHelp);
+  cmd->add_flag("--rigid", args->rigid, "nearly rigid elements (very stiff edge springs, thesis 6.4): same as --preset rigid");
   cmd->add_option("-o,--output", args->output, "output SVG")->required();
   cmd->add_option("--png", args->png, "also render a PNG preview to this file");
   cmd->add_option("--png-width", args->pngWidth, "PNG width in pixels")->capture_default_str();

@@ -49,6 +49,18 @@ struct RepulsionOptions {
   // moves only by growth; true, the measured skin area as in the thesis (jitters more).
   bool stallOnMeasuredArea = false;
   int maxIterations = 30000;
+  // --- secondary elements (4.6), packed when a secondary library is given
+  // A secondary's nominal skin is this times a primary's in linear size (the thesis's are small).
+  double secondaryScale = 0.4;
+  // d_min and d_sep (thesis 5–10 and 10 on a 1000 grid), canonical units. 0: from the nominal
+  // secondary skin's size L = √(area): d_min = max(gap, L / 4), d_sep = L, so a pocket takes
+  // one secondary about as large as it can grow there.
+  double secondaryMinDistance = 0.0;
+  double secondarySeparation = 0.0;
+  int secondaryResolution = 1000;     // distance transform cells across the canonical frame
+  // The secondary pass stops at this total skin fill (primaries, secondaries and fixed
+  // elements), else by eq. 4.7 or the iteration cap as the primary pass.
+  double secondaryTargetFill = 0.95;
   // --- run
   std::uint64_t seed = 1;
   int threads = 0;                // 0: all cores; results do not depend on it
@@ -80,10 +92,23 @@ struct PlacedElement {
   std::vector<Vec2> meshVertices;                // input coordinates
   std::vector<std::array<int, 3>> meshTriangles;
   double growth = 0.0;      // final growth factor g
+  bool secondary = false;   // placed by the secondary pass; libraryIndex is then in the secondary library
+  double maxEdgeStrain = 0.0;  // largest |length / (g × rest length) − 1| over its edge springs
+  double meanEdgeStrain = 0.0; // mean of the same over its edge springs
 };
 
 enum class StopReason { TargetFill, Stalled, IterationCap };
 const char* toString(StopReason reason);
+
+// One simulation pass: the primary one, then the secondary one when it runs (4.6).
+struct PackingPass {
+  int elements = 0;          // elements this pass moved
+  int iterations = 0;
+  StopReason stopReason = StopReason::IterationCap;
+  double seconds = 0.0;      // wall time of the pass, seeding and meshing included
+  double skinFill = 0.0;     // at the pass's end; as Packing::skinFill
+  double artFill = 0.0;      // at the pass's end; as artFill()
+};
 
 struct Packing {
   std::vector<PlacedElement> elements;
@@ -91,7 +116,10 @@ struct Packing {
   double canonicalScale = 1.0;   // canonical units per input unit
   int iterations = 0;
   StopReason stopReason = StopReason::IterationCap;
-  double skinFill = 0.0;         // skin area / container area
+  double skinFill = 0.0;         // (skin area + area blocked by fixed elements) / container area
+  std::vector<PackingPass> passes;
+  // Fixed elements (Scene::fixed): what they paint inside the container, input coordinates.
+  Region fixedArt;
   int vertexCount = 0;
   int springCount = 0;
 };
@@ -99,10 +127,13 @@ struct Packing {
 // Throws InputError for an empty library or container, or bad options.
 Packing packRepulsion(const Scene& scene, const Library& library, const RepulsionOptions& options = {},
                       const RepulsionCallbacks& callbacks = {});
+// The same, then a secondary pass with `secondaryLibrary` (4.6) when it is not empty.
+Packing packRepulsion(const Scene& scene, const Library& library, const Library& secondaryLibrary,
+                      const RepulsionOptions& options = {}, const RepulsionCallbacks& callbacks = {});
 
 // What each placed element paints, as one region per element (the union of its shapes).
 std::vector<Region> artOutlines(const Packing& packing);
-// Total painted area of the elements over the container area.
+// Total painted area of the elements and the fixed elements over the container area.
 double artFill(const Packing& packing);
 
 }  // namespace pak

@@ -41,7 +41,7 @@ Drawing packingDrawing(const Scene& scene, const Packing& packing, const Packing
   DrawingGroup elements{"elements", "", {}, {}, {}};
   for (const PlacedElement& e : packing.elements) {
     std::string name = std::filesystem::path(e.source).filename().string();
-    elements.children.push_back({"", "element", {{"data-source", name}}, e.art, {}});
+    elements.children.push_back({"", e.secondary ? "element secondary" : "element", {{"data-source", name}}, e.art, {}});
   }
   drawing.groups.push_back(std::move(elements));
 

@@ -111,8 +111,8 @@ void PackingSimulation::finalize(const Box& area) {
     fill_ += m.area;
     restFill_ += m.restArea * m.growth * m.growth;
   }
-  fill_ /= containerArea_;
-  restFill_ /= containerArea_;
+  fill_ = (fill_ + parameters_.occupiedArea) / containerArea_;
+  restFill_ = (restFill_ + parameters_.occupiedArea) / containerArea_;
 }
 
 void PackingSimulation::prepareSkins(std::size_t meshBegin, std::size_t meshEnd) {
@@ -293,8 +293,8 @@ void PackingSimulation::step() {
     total += mesh.area;
     rest += mesh.restArea * mesh.growth * mesh.growth;
   }
-  fill_ = total / containerArea_;
-  restFill_ = rest / containerArea_;
+  fill_ = (total + parameters_.occupiedArea) / containerArea_;
+  restFill_ = (rest + parameters_.occupiedArea) / containerArea_;
   ++iteration_;
 }
 

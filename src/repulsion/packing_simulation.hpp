@@ -26,6 +26,7 @@ struct SimulationParameters {
   double growthRate = 0.01;
   double cellSize = 30.0;  // neighbour grid cell; also the repulsion cut-off distance
   double outsideTolerance = 2.0;  // a vertex further outside the container blocks growth
+  double occupiedArea = 0.0;  // container area taken by obstacles (fixed elements), counted in fill
 };
 
 struct MeshInstance {

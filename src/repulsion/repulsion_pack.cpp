@@ -1,5 +1,6 @@
 // packRepulsion: canonical frame, element preparation, seeding, simulation, art replay.
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <string>
 
@@ -7,6 +8,8 @@
 #include "pak/clipping.hpp"
 #include "pak/error.hpp"
 #include "pak/repulsion.hpp"
+#include "pak/rng.hpp"
+#include "secondary_seeding.hpp"
 #include "seeding.hpp"
 
 namespace pak {
@@ -55,6 +58,13 @@ void checkOptions(const RepulsionOptions& o) {
   if (o.meshSpacing < 0.0 || o.count < 0 || o.maxIterations < 0 || o.stallWindow < 1 || o.cellSize < 0.0)
     throw InputError("", "mesh spacing, count, cell size, max iterations and stall window must not be negative");
   if (o.count > 100000) throw InputError("", "count " + std::to_string(o.count) + " is absurdly large");
+  if (!(o.secondaryScale > 0.0 && o.secondaryScale <= 10.0)) throw InputError("", "secondary scale must be in (0, 10]");
+  if (!(o.secondaryMinDistance >= 0.0) || !(o.secondarySeparation >= 0.0) || !std::isfinite(o.secondaryMinDistance) ||
+      !std::isfinite(o.secondarySeparation))
+    throw InputError("", "secondary minimum distance and separation must be non-negative numbers");
+  if (o.secondaryResolution < 16 || o.secondaryResolution > 8000)
+    throw InputError("", "secondary resolution must be between 16 and 8000 cells");
+  positive(o.secondaryTargetFill, "secondary target fill");
   for (double k : {o.repulsionStrength, o.overlapStrength, o.boundaryStrength, o.edgeStrength,
                    o.negativeSpaceStrength, o.torsionStrength, o.soft, o.growthRate, o.stallEpsilon})
     if (!(k >= 0.0) || !std::isfinite(k)) throw InputError("", "force strengths and rates must be non-negative numbers");
@@ -157,6 +167,15 @@ Packing collectPacking(const PackingSimulation& sim, const std::vector<PreparedE
       for (Subpath& sub : shape.subpaths)
         for (Vec2& p : sub.points) p = frame.toInput(artPoints[k++]);
     }
+    int edges = 0;
+    for (const Spring& s : type.mesh.springs)
+      if (s.kind == SpringKind::Edge) {
+        const double strain = std::abs(distance(vertices[s.a], vertices[s.b]) / (s.restLength * mesh.growth) - 1.0);
+        placed.maxEdgeStrain = std::max(placed.maxEdgeStrain, strain);
+        placed.meanEdgeStrain += strain;
+        ++edges;
+      }
+    if (edges > 0) placed.meanEdgeStrain /= edges;
     for (int v = 0; v < mesh.vertexCount; ++v) placed.meshVertices.push_back(frame.toInput(vertices[v]));
     placed.skin.assign(placed.meshVertices.begin(), placed.meshVertices.begin() + mesh.boundaryCount);
     placed.meshTriangles = type.mesh.mesh.triangles;
@@ -165,10 +184,79 @@ Packing collectPacking(const PackingSimulation& sim, const std::vector<PreparedE
   return packing;
 }
 
+// Steps `sim` until the target fill, eq. 4.7 or the iteration cap (4.5.2). Progress and
+// snapshots count iterations on from `iterationOffset` (the iterations of earlier passes).
+template <class Snapshot>
+StopReason simulateUntilStopped(PackingSimulation& sim, const RepulsionOptions& options, double targetFill,
+                                int iterationOffset, const RepulsionCallbacks& callbacks, const Snapshot& snapshot) {
+  // Eq. 4.7 over a window of the last w + 1 area fractions. The fraction is the meshes' rest
+  // area (see restFill): the measured skin area jitters by more than ε from step to step.
+  const int w = options.stallWindow;
+  std::vector<double> history(static_cast<std::size_t>(w) + 1, 0.0);
+  StopReason reason = StopReason::IterationCap;
+  auto report = [&] {
+    if (!callbacks.onProgress) return;
+    RepulsionProgress progress{iterationOffset + sim.iteration(), sim.fill(), sim.growingCount(),
+                               static_cast<int>(sim.meshes().size())};
+    for (const MeshInstance& m : sim.meshes()) {
+      progress.touchingNeighbours += m.overlapping ? 1 : 0;
+      progress.againstWall += (!m.overlapping && m.outside) ? 1 : 0;
+    }
+    callbacks.onProgress(progress);
+  };
+  while (sim.iteration() < options.maxIterations) {
+    sim.step();
+    int it = sim.iteration();
+    history[static_cast<std::size_t>(it % (w + 1))] = options.stallOnMeasuredArea ? sim.fill() : sim.restFill();
+    const int total = iterationOffset + it;
+    if (callbacks.onProgress && callbacks.progressEvery > 0 && total % callbacks.progressEvery == 0) report();
+    if (callbacks.onSnapshot && callbacks.snapshotEvery > 0 && total % callbacks.snapshotEvery == 0)
+      callbacks.onSnapshot(snapshot());
+    if (sim.fill() >= targetFill) { reason = StopReason::TargetFill; break; }
+    if (it > w) {
+      double sum = 0.0;
+      for (int i = 1; i <= w; ++i) {
+        double d = history[static_cast<std::size_t>((it - w + i) % (w + 1))] -
+                   history[static_cast<std::size_t>((it - w + i - 1) % (w + 1))];
+        sum += d * d;
+      }
+      if (std::sqrt(sum / w) < options.stallEpsilon) { reason = StopReason::Stalled; break; }
+    }
+  }
+  report();
+  return reason;
+}
+
+// The skin rings of all meshes as one region (canonical units).
+Region skinsRegion(const PackingSimulation& sim) {
+  std::vector<Region> skins;
+  for (const MeshInstance& m : sim.meshes()) {
+    const Vec2* v = sim.positions().data() + m.vertexBegin;
+    skins.push_back(Region{Polygon{Ring(v, v + m.boundaryCount), {}}});
+  }
+  return unite(skins);
+}
+
+double maxRestRadius(const ElementMesh& mesh) {
+  double r = 0.0;
+  for (int k = 0; k < mesh.boundaryCount; ++k) r = std::max(r, distance(mesh.mesh.vertices[k], mesh.restCentroid));
+  return r;
+}
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
 }  // namespace
 
 Packing packRepulsion(const Scene& scene, const Library& library, const RepulsionOptions& options,
                       const RepulsionCallbacks& callbacks) {
+  return packRepulsion(scene, library, Library{}, options, callbacks);
+}
+
+Packing packRepulsion(const Scene& scene, const Library& library, const Library& secondaryLibrary,
+                      const RepulsionOptions& options, const RepulsionCallbacks& callbacks) {
+  const auto passStart = std::chrono::steady_clock::now();
   checkOptions(options);
   if (library.empty()) throw InputError("", "no elements to pack");
   Box box = bounds(scene.container);
@@ -180,6 +268,23 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Repulsio
   frame.scale = kCanonicalSide / std::max(box.width(), box.height());
   Region container = transformed(scene.container, frame.scale, -box.min * frame.scale);
   normalizeOrientation(container);
+  // Fixed elements: obstacles. Their art, offset by gap/2 as a skin is, is cut out of the
+  // container, so the boundary force (eq. 4.5) and the reflex-corner push keep elements off
+  // them; the area they block counts as filled.
+  Region fixedArt;
+  double blockedArea = 0.0;
+  if (!scene.fixed.empty()) {
+    const ClipOptions clip{1e-7 * std::max(box.width(), box.height())};
+    std::vector<Region> painted;
+    for (const Shape& shape : scene.fixed) painted.push_back(paintedRegion(shape, clip));
+    const Region fixedAll = unite(painted, clip);
+    fixedArt = intersect(fixedAll, scene.container, clip);
+    const double fullArea = area(container);
+    container = subtract(container, offset(transformed(fixedAll, frame.scale, -box.min * frame.scale), 0.5 * options.gap));
+    normalizeOrientation(container);
+    blockedArea = fullArea - area(container);
+    if (!(area(container) > 0.0)) throw InputError(scene.source, "the fixed elements cover the whole container");
+  }
   const double containerArea = area(container);
   const int count = options.count > 0 ? options.count : std::max(1, static_cast<int>(std::lround(1.0 / options.elementArea)));
   const double nominalSkinArea = containerArea / count;
@@ -215,9 +320,10 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Repulsio
   parameters.growthRate = options.growthRate;
   parameters.outsideTolerance = options.outsideTolerance;
   parameters.cellSize = options.cellSize > 0.0 ? options.cellSize : 2.0 * spacing;
+  parameters.occupiedArea = blockedArea;
 
   ThreadPool pool(options.threads);
-  PackingSimulation sim(containerIndex, containerArea, parameters, pool);
+  PackingSimulation sim(containerIndex, containerArea + blockedArea, parameters, pool);
   for (const Seed& s : seeds) sim.addMesh(types[s.type].mesh, s.type, s.position, s.angle, g0);
   sim.setContainerCorners(PackingSimulation::reflexCorners(container));
   Box area = bounds(container);
@@ -226,41 +332,80 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Repulsio
   area.add(area.max + margin);
   sim.finalize(area);
 
-  // Eq. 4.7 over a window of the last w + 1 area fractions. The fraction is the meshes' rest
-  // area (see restFill): the measured skin area jitters by more than ε from step to step.
-  const int w = options.stallWindow;
-  std::vector<double> history(static_cast<std::size_t>(w) + 1, 0.0);
-  StopReason reason = StopReason::IterationCap;
-  auto report = [&] {
-    if (!callbacks.onProgress) return;
-    RepulsionProgress progress{sim.iteration(), sim.fill(), sim.growingCount(), static_cast<int>(sim.meshes().size())};
-    for (const MeshInstance& m : sim.meshes()) {
-      progress.touchingNeighbours += m.overlapping ? 1 : 0;
-      progress.againstWall += (!m.overlapping && m.outside) ? 1 : 0;
-    }
-    callbacks.onProgress(progress);
-  };
-  while (sim.iteration() < options.maxIterations) {
-    sim.step();
-    int it = sim.iteration();
-    history[static_cast<std::size_t>(it % (w + 1))] = options.stallOnMeasuredArea ? sim.fill() : sim.restFill();
-    if (callbacks.onProgress && callbacks.progressEvery > 0 && it % callbacks.progressEvery == 0) report();
-    if (callbacks.onSnapshot && callbacks.snapshotEvery > 0 && it % callbacks.snapshotEvery == 0)
-      callbacks.onSnapshot(collectPacking(sim, types, frame, scene.container));
-    if (sim.fill() >= options.targetFill) { reason = StopReason::TargetFill; break; }
-    if (it > w) {
-      double sum = 0.0;
-      for (int i = 1; i <= w; ++i) {
-        double d = history[static_cast<std::size_t>((it - w + i) % (w + 1))] -
-                   history[static_cast<std::size_t>((it - w + i - 1) % (w + 1))];
-        sum += d * d;
-      }
-      if (std::sqrt(sum / w) < options.stallEpsilon) { reason = StopReason::Stalled; break; }
-    }
-  }
-  report();
+  const StopReason reason = simulateUntilStopped(sim, options, options.targetFill, 0, callbacks, [&] {
+    return collectPacking(sim, types, frame, scene.container);
+  });
   Packing packing = collectPacking(sim, types, frame, scene.container);
   packing.stopReason = reason;
+  packing.fixedArt = fixedArt;
+  packing.passes.push_back({static_cast<int>(sim.meshes().size()), sim.iteration(), reason, secondsSince(passStart),
+                            packing.skinFill, artFill(packing)});
+  if (secondaryLibrary.empty()) return packing;
+
+  // Secondary elements (4.6): seeds in the pockets the primaries left, small elements shrunk
+  // into them, the primaries frozen where they stopped (they repel but neither move nor grow).
+  const auto secondaryStart = std::chrono::steady_clock::now();
+  const double secondaryArea = nominalSkinArea * options.secondaryScale * options.secondaryScale;
+  SecondarySeedingOptions secondarySeeding;
+  secondarySeeding.minDistance = options.secondaryMinDistance > 0.0 ? options.secondaryMinDistance
+                                                                    : std::max(options.gap, 0.25 * std::sqrt(secondaryArea));
+  secondarySeeding.separation = options.secondarySeparation > 0.0 ? options.secondarySeparation : std::sqrt(secondaryArea);
+  secondarySeeding.resolution = options.secondaryResolution;
+  const std::vector<SecondarySeed> pockets =
+      secondarySeeds(subtract(container, skinsRegion(sim)), bounds(container), secondarySeeding);
+  PackingPass secondPass{static_cast<int>(pockets.size()), 0, StopReason::IterationCap, 0.0, packing.skinFill,
+                         packing.passes.front().artFill};
+  if (!pockets.empty()) {
+    const double secondarySpacing = options.meshSpacing > 0.0 ? options.meshSpacing
+                                                              : std::max(0.5 * options.gap, std::sqrt(secondaryArea) / 10.0);
+    std::vector<PreparedElement> allTypes = types;
+    const int firstSecondary = static_cast<int>(allTypes.size());
+    for (PreparedElement& e : prepareLibrary(secondaryLibrary, secondaryArea, secondarySpacing, options))
+      allTypes.push_back(std::move(e));
+    const int secondaryTypes = static_cast<int>(allTypes.size()) - firstSecondary;
+
+    PackingSimulation second(containerIndex, containerArea + blockedArea, parameters, pool);
+    for (const MeshInstance& m : sim.meshes()) {
+      const int id = second.addMesh(allTypes[m.type].mesh, m.type, {}, 0.0, m.growth, true);
+      std::copy(sim.positions().begin() + m.vertexBegin, sim.positions().begin() + m.vertexBegin + m.vertexCount,
+                second.positions().begin() + second.meshes()[id].vertexBegin);
+    }
+    // Random types and angles; each shrunk so its skin fits the pocket's empty disc.
+    Rng rng(options.seed * 0x9E3779B97F4A7C15ull + 46);
+    for (const SecondarySeed& pocket : pockets) {
+      const int type = firstSecondary + static_cast<int>(rng.below(static_cast<std::uint64_t>(secondaryTypes)));
+      const double angle = rng.uniform(0.0, 2.0 * 3.14159265358979323846);
+      const double g = std::min(1.0, 0.9 * pocket.radius / maxRestRadius(allTypes[type].mesh));
+      second.addMesh(allTypes[type].mesh, type, pocket.position, angle, g);
+    }
+    second.setContainerCorners(PackingSimulation::reflexCorners(container));
+    second.finalize(area);
+    const int primaryIterations = sim.iteration();
+    auto collect = [&] {
+      Packing p = collectPacking(second, allTypes, frame, scene.container);
+      p.iterations += primaryIterations;
+      for (PlacedElement& e : p.elements)
+        if (e.libraryIndex >= firstSecondary) { e.secondary = true; e.libraryIndex -= firstSecondary; }
+      return p;
+    };
+    // Eq. 4.7 with ε scaled by the pass's nominal area over the primaries' (the free area):
+    // a few small elements change the fill far less per iteration than the primaries did, so
+    // the unscaled ε would stop them before they grow (see docs/secondary-fixed-rigid.md).
+    RepulsionOptions secondOptions = options;
+    secondOptions.stallEpsilon *= static_cast<double>(pockets.size()) * secondaryArea / containerArea;
+    secondPass.stopReason =
+        simulateUntilStopped(second, secondOptions, options.secondaryTargetFill, primaryIterations, callbacks, collect);
+    secondPass.iterations = second.iteration();
+    std::vector<PackingPass> passes = std::move(packing.passes);
+    packing = collect();
+    packing.stopReason = secondPass.stopReason;
+    packing.fixedArt = fixedArt;
+    packing.passes = std::move(passes);
+    secondPass.skinFill = packing.skinFill;
+    secondPass.artFill = artFill(packing);
+  }
+  secondPass.seconds = secondsSince(secondaryStart);
+  packing.passes.push_back(secondPass);
   return packing;
 }
 
@@ -275,7 +420,7 @@ std::vector<Region> artOutlines(const Packing& packing) {
 }
 
 double artFill(const Packing& packing) {
-  double total = 0.0;
+  double total = area(packing.fixedArt);
   for (const Region& r : artOutlines(packing)) total += area(r);
   double a = area(packing.container);
   return a > 0.0 ? total / a : 0.0;

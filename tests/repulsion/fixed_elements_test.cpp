@@ -1,0 +1,128 @@
+// Fixed elements (thesis 1.1, "fixed elements"): copied to the output unchanged, obstacles
+// that no element overlaps, counted as occupied in the fill ratios.
+#include <gtest/gtest.h>
+
+#include "pak/clipping.hpp"
+#include "pak/error.hpp"
+#include "pak/packing_drawing.hpp"
+#include "pak/repulsion.hpp"
+#include "pak/repulsion_presets.hpp"
+#include "pak/scene_loader.hpp"
+#include "pak/svg_writer.hpp"
+#include "pak/verify.hpp"
+
+using namespace pak;
+
+namespace {
+
+const std::string kExamples = std::string(PAK_SOURCE_DIR) + "/examples";
+
+// The text of the output's <g id="fixed"> layer (it holds shapes only, no nested groups).
+std::string fixedLayer(const std::string& svg) {
+  std::size_t begin = svg.find("<g id=\"fixed\"");
+  if (begin == std::string::npos) return {};
+  std::size_t end = svg.find("</g>", begin);
+  return svg.substr(begin, end - begin);
+}
+
+RepulsionOptions quickOptions() {
+  RepulsionOptions o;
+  o.gap = 16.0;
+  o.count = 8;
+  o.targetFill = 0.45;
+  o.maxIterations = 3000;
+  o.seed = 2;
+  return o;
+}
+
+void expectNoOverlapsWithFixed(const Packing& packing) {
+  ASSERT_FALSE(packing.fixedArt.empty());
+  std::vector<Region> outlines = artOutlines(packing);
+  outlines.push_back(packing.fixedArt);  // one more, immovable element
+  PackingCheckOptions check;
+  check.areaTolerance = 1e-5 * area(packing.container);
+  PackingCheck result = verifyPacking(outlines, packing.container, check);
+  EXPECT_TRUE(result.ok) << (result.problems.empty() ? "" : result.problems.front());
+  EXPECT_EQ(result.overlappingPairs, 0);
+  EXPECT_EQ(result.elementsOutside, 0);
+}
+
+}  // namespace
+
+TEST(FixedElements, AreObstaclesCopiedUnchangedAndCountedInFill) {
+  Scene scene = loadScene(kExamples + "/fixed-scene.svg");
+  ASSERT_EQ(scene.fixed.size(), 3u);  // eye, pupil, gill (a stroke with no fill)
+  Library library = loadLibrary({kExamples + "/elements"});
+  Packing packing = packRepulsion(scene, library, quickOptions());
+  expectNoOverlapsWithFixed(packing);
+
+  // Nothing comes within gap/2 of a fixed element's paint (in canonical units, less a little
+  // for the boundary springs' give).
+  const double margin = 0.3 * quickOptions().gap / packing.canonicalScale;
+  const Region keepOut = offset(packing.fixedArt, margin);
+  for (const Region& outline : artOutlines(packing)) EXPECT_LT(area(intersect(outline, keepOut)), 1e-6 * area(keepOut));
+
+  // The fill ratios count the fixed art: artFill minus the elements' own art is its area.
+  double elementsArt = 0.0;
+  for (const Region& r : artOutlines(packing)) elementsArt += area(r);
+  const double fixedRatio = area(packing.fixedArt) / area(packing.container);
+  EXPECT_GT(fixedRatio, 0.01);
+  EXPECT_NEAR(artFill(packing), elementsArt / area(packing.container) + fixedRatio, 1e-12);
+  double skins = 0.0;
+  for (const PlacedElement& e : packing.elements) skins += area(Region{Polygon{e.skin, {}}});
+  EXPECT_GT(packing.skinFill, skins / area(packing.container) + fixedRatio);
+
+  // The output's fixed layer is the input's, untouched: the same bytes as a drawing of the
+  // scene with no elements at all, and the same geometry and paint when read back.
+  std::string svg = toSvgString(packingDrawing(scene, packing));
+  Packing empty;
+  empty.container = packing.container;
+  empty.canonicalScale = packing.canonicalScale;
+  EXPECT_EQ(fixedLayer(svg), fixedLayer(toSvgString(packingDrawing(scene, empty))));
+  EXPECT_FALSE(fixedLayer(svg).empty());
+}
+
+TEST(FixedElements, SecondaryPassKeepsOffThemToo) {
+  Scene scene = loadScene(kExamples + "/fixed-scene.svg");
+  Library library = loadLibrary({kExamples + "/elements/cat.svg", kExamples + "/elements/fish.svg"});
+  Library secondary = loadLibrary({kExamples + "/elements/star.svg"});
+  RepulsionOptions options = quickOptions();
+  options.maxIterations = 600;
+  Packing packing = packRepulsion(scene, library, secondary, options);
+  ASSERT_EQ(packing.passes.size(), 2u);
+  EXPECT_GT(packing.passes[1].elements, 0);
+  expectNoOverlapsWithFixed(packing);
+}
+
+TEST(RigidPreset, KeepsShapesNearlyUndeformedAndOverlapFree) {
+  Scene scene = loadScene(kExamples + "/scene.svg");
+  Library library = loadLibrary({kExamples + "/elements"});
+  RepulsionOptions soft = quickOptions();
+  RepulsionOptions rigid = quickOptions();
+  applyRepulsionPreset("rigid", rigid);
+  EXPECT_EQ(rigid.edgeStrength, 1000.0);
+  EXPECT_EQ(rigid.gap, soft.gap);  // a preset sets strengths only
+  applyRepulsionPreset("soft", soft);
+  auto maxStrain = [](const Packing& p) {
+    double s = 0.0;
+    for (const PlacedElement& e : p.elements) s = std::max(s, e.maxEdgeStrain);
+    return s;
+  };
+  auto meanStrain = [](const Packing& p) {
+    double s = 0.0;
+    for (const PlacedElement& e : p.elements) s += e.meanEdgeStrain / p.elements.size();
+    return s;
+  };
+  Packing rigidPacking = packRepulsion(scene, library, rigid);
+  Packing softPacking = packRepulsion(scene, library, soft);
+  // Measured: rigid max 0.072, mean 0.0048; soft max 0.98, mean 0.044 (default: 0.33, 0.016).
+  EXPECT_LT(maxStrain(rigidPacking), 0.1);
+  EXPECT_LT(meanStrain(rigidPacking), 0.01);
+  EXPECT_GT(maxStrain(softPacking), 5.0 * maxStrain(rigidPacking));
+  EXPECT_GT(meanStrain(softPacking), 5.0 * meanStrain(rigidPacking));
+  PackingCheckOptions check;
+  check.areaTolerance = 1e-5 * area(rigidPacking.container);
+  PackingCheck result = verifyPacking(artOutlines(rigidPacking), rigidPacking.container, check);
+  EXPECT_TRUE(result.ok) << (result.problems.empty() ? "" : result.problems.front());
+  EXPECT_THROW(applyRepulsionPreset("wobbly", rigid), InputError);
+}
