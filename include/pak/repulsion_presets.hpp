@@ -14,11 +14,11 @@ struct RepulsionPreset {
   std::string description;  // one line for --help
 };
 
-// default, soft, rigid, thesis — in that order.
+// default, soft, rigid — in that order.
 const std::vector<RepulsionPreset>& repulsionPresets();
 
-// Sets the strengths (and, for stiff springs, the time step) of preset `name` on `options`,
-// leaving every other option as it is. Throws InputError for an unknown name.
+// Sets the strengths of preset `name` on `options` (for stiff springs also the time step, with
+// the stopping rule kept the same in simulated time), leaving every other option as it is. Throws InputError for an unknown name.
 void applyRepulsionPreset(const std::string& name, RepulsionOptions& options);
 
 }  // namespace pak
