@@ -357,7 +357,7 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Library&
                          packing.passes.front().artFill};
   if (!pockets.empty()) {
     const double secondarySpacing = options.meshSpacing > 0.0 ? options.meshSpacing
-                                                              : std::max(0.5 * options.gap, std::sqrt(secondaryArea) / 10.0);
+                                                              : std::max(0.5 * options.gap, std::sqrt(secondaryArea) / 7.0);
     std::vector<PreparedElement> allTypes = types;
     const int firstSecondary = static_cast<int>(allTypes.size());
     for (PreparedElement& e : prepareLibrary(secondaryLibrary, secondaryArea, secondarySpacing, options))

@@ -92,7 +92,7 @@ TEST(SecondaryPass, FillsPocketsWithoutMovingPrimariesOrOverlapping) {
                                  kExamples + "/elements/bird.svg"});
   Library secondary = loadLibrary({kExamples + "/elements/star.svg", kExamples + "/elements/moon.svg"});
   RepulsionOptions options = quickOptions();
-  options.maxIterations = 700;  // per pass
+  options.maxIterations = 450;  // per pass
   Packing primaryOnly = packRepulsion(scene, library, options);
   Packing packing = packRepulsion(scene, library, secondary, options);
 
