@@ -13,13 +13,3 @@ Polyline resamplePolyline(const Polyline& line, double spacing);
 Vec2 pointAtArclength(const Ring& ring, double s);
 
 }  // namespace pak
-
-namespace pak {
-
-// Douglas–Peucker: the fewest vertices of `ring` (a subset, first vertex kept) such that no
-// removed vertex lies further than `tolerance` from the simplified ring.
-Ring simplifyRing(const Ring& ring, double tolerance);
-// simplifyRing on every ring; rings that would fall below 3 vertices are kept as they are.
-Region simplifyRegion(const Region& region, double tolerance);
-
-}  // namespace pak

@@ -2,7 +2,7 @@
 #include <vector>
 
 #include "pak/closest_point.hpp"
-#include "pak/resample.hpp"
+#include "pak/simplify.hpp"
 
 namespace pak {
 namespace {

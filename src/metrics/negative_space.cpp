@@ -5,7 +5,7 @@
 
 #include "metrics_internal.hpp"
 #include "pak/error.hpp"
-#include "pak/resample.hpp"
+#include "pak/simplify.hpp"
 
 namespace pak::metrics_internal {
 

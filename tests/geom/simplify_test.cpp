@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "pak/closest_point.hpp"
-#include "pak/resample.hpp"
+#include "pak/simplify.hpp"
 
 namespace pak {
 namespace {
