@@ -155,3 +155,21 @@ TEST(SecondaryPass, NoPocketDeepEnoughMeansNoSecondaries) {
   EXPECT_EQ(packing.passes[1].iterations, 0);
   for (const PlacedElement& e : packing.elements) EXPECT_FALSE(e.secondary);
 }
+
+TEST(SecondaryPass, SameSeedSameBytesWhateverTheThreadCount) {
+  Scene scene = loadScene(kExamples + "/scene.svg");
+  Library library = loadLibrary({kExamples + "/elements/cat.svg"});
+  Library secondary = loadLibrary({kExamples + "/elements/star.svg", kExamples + "/elements/moon.svg"});
+  RepulsionOptions options = quickOptions();
+  options.count = 5;
+  options.maxIterations = 150;  // per pass
+  std::string reference;
+  for (int threads : {1, 2}) {
+    options.threads = threads;
+    Packing packing = packRepulsion(scene, library, secondary, options);
+    ASSERT_GT(packing.passes.back().elements, 0);
+    std::string svg = toSvgString(packingDrawing(scene, packing));
+    if (reference.empty()) reference = svg;
+    EXPECT_EQ(svg, reference) << "threads = " << threads;
+  }
+}
