@@ -2,6 +2,9 @@
 // that no element overlaps, counted as occupied in the fill ratios.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+
 #include "pak/clipping.hpp"
 #include "pak/error.hpp"
 #include "pak/packing_drawing.hpp"
@@ -92,6 +95,23 @@ TEST(FixedElements, SecondaryPassKeepsOffThemToo) {
   ASSERT_EQ(packing.passes.size(), 2u);
   EXPECT_GT(packing.passes[1].elements, 0);
   expectNoOverlapsWithFixed(packing);
+}
+
+TEST(FixedElements, FocalPathsOfPathFilesAreFixedElements) {
+  // A .path scene: a square container and a focal path (type 2), a square in the middle.
+  const auto file = std::filesystem::temp_directory_path() / ("pak-focal-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + ".path");
+  std::ofstream(file) << "1\nforeground_color_rgb 0 0,0,0 0,0,0\nbackground_color_rgb 0 -1,-1,-1 200,30,30\n"
+                         "0 1 0 0 0 1000 0 1000 1000 0 1000\n0 1 2 400 400 600 400 600 600 400 600\n";
+  Scene scene = loadScene(file.string());
+  std::filesystem::remove(file);
+  ASSERT_EQ(scene.fixed.size(), 1u);
+  RepulsionOptions options = quickOptions();
+  options.count = 6;
+  options.maxIterations = 400;
+  Packing packing = packRepulsion(scene, loadLibrary({kExamples + "/elements/cat.svg"}), options);
+  expectNoOverlapsWithFixed(packing);
+  // The focal square (and its 1-unit stroke) is occupied: 201² of the 1000² container.
+  EXPECT_NEAR(area(packing.fixedArt), 201.0 * 201.0, 1.0);
 }
 
 TEST(RigidPreset, KeepsShapesNearlyUndeformedAndOverlapFree) {
