@@ -7,6 +7,7 @@
 #include "pak/clipping.hpp"
 #include "pak/error.hpp"
 #include "pak/repulsion.hpp"
+#include "pak/tiling.hpp"
 #include "seeding.hpp"
 
 namespace pak {
@@ -54,6 +55,7 @@ void checkOptions(const RepulsionOptions& o) {
   if (!(o.damping >= 0.0 && o.damping < 1.0)) throw InputError("", "damping must be in [0, 1)");
   if (o.meshSpacing < 0.0 || o.count < 0 || o.maxIterations < 0 || o.stallWindow < 1 || o.cellSize < 0.0)
     throw InputError("", "mesh spacing, count, cell size, max iterations and stall window must not be negative");
+  if (o.tile != Vec2{} && !isTiled(o.tile)) throw InputError("", "tile size must be two positive numbers W,H");
   if (o.count > 100000) throw InputError("", "count " + std::to_string(o.count) + " is absurdly large");
   for (double k : {o.repulsionStrength, o.overlapStrength, o.boundaryStrength, o.edgeStrength,
                    o.negativeSpaceStrength, o.torsionStrength, o.soft, o.growthRate, o.stallEpsilon})
@@ -111,7 +113,7 @@ std::vector<PreparedElement> prepareLibrary(const Library& library, double nomin
 
 // Skins of the seeded meshes at growth g: overlap-free and inside the container?
 bool seedingIsClear(const std::vector<PreparedElement>& types, const std::vector<Seed>& seeds, double g,
-                    const RegionIndex& container) {
+                    const RegionIndex& container, Vec2 period = {}) {
   std::vector<Region> skins;
   std::vector<Box> boxes;
   for (const Seed& s : seeds) {
@@ -119,7 +121,7 @@ bool seedingIsClear(const std::vector<PreparedElement>& types, const std::vector
     Ring ring;
     for (int k = 0; k < mesh.boundaryCount; ++k) {
       Vec2 p = s.position + rotated(mesh.mesh.vertices[k] - mesh.restCentroid, s.angle) * g;
-      if (!container.query(p, false).inside) return false;
+      if (!isTiled(period) && !container.query(p, false).inside) return false;  // a tile has no walls
       ring.push_back(p);
     }
     boxes.push_back(bounds(ring));
@@ -128,7 +130,7 @@ bool seedingIsClear(const std::vector<PreparedElement>& types, const std::vector
   for (std::size_t i = 0; i < skins.size(); ++i)
     for (std::size_t j = i + 1; j < skins.size(); ++j)
       if (boxes[i].overlaps(boxes[j]) && area(intersect(skins[i], skins[j])) > 0.0) return false;
-  return true;
+  return !isTiled(period) || !clonesOverlap(skins, period);
 }
 
 Packing collectPacking(const PackingSimulation& sim, const std::vector<PreparedElement>& types,
@@ -170,6 +172,9 @@ Packing collectPacking(const PackingSimulation& sim, const std::vector<PreparedE
 Packing packRepulsion(const Scene& scene, const Library& library, const RepulsionOptions& options,
                       const RepulsionCallbacks& callbacks) {
   checkOptions(options);
+  // Tile mode packs the rectangle [0, W] × [0, H] in place of the scene's container.
+  if (isTiled(options.tile) && !isTileScene(scene, options.tile))
+    return packRepulsion(tileScene(options.tile), library, options, callbacks);
   if (library.empty()) throw InputError("", "no elements to pack");
   Box box = bounds(scene.container);
   double containerAreaInput = area(scene.container);
@@ -192,6 +197,7 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Repulsio
   seeding.count = count;
   seeding.types = static_cast<int>(types.size());
   seeding.seed = options.seed;
+  seeding.period = isTiled(options.tile) ? options.tile * frame.scale : Vec2{};
   std::vector<Seed> seeds = seedElements(container, containerIndex, seeding);
   if (seeds.empty()) throw InputError(scene.source, "container too small to seed any element");
 
@@ -199,7 +205,7 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Repulsio
   double seededSkin = 0.0;
   for (const Seed& s : seeds) seededSkin += types[s.type].mesh.skinArea;
   double g0 = std::sqrt(options.initialCoverage * containerArea / seededSkin);
-  for (int attempt = 0; attempt < 30 && !seedingIsClear(types, seeds, g0, containerIndex); ++attempt) g0 *= 0.9;
+  for (int attempt = 0; attempt < 30 && !seedingIsClear(types, seeds, g0, containerIndex, seeding.period); ++attempt) g0 *= 0.9;
 
   SimulationParameters parameters;
   parameters.repulsionStrength = options.repulsionStrength;
@@ -215,6 +221,7 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Repulsio
   parameters.growthRate = options.growthRate;
   parameters.outsideTolerance = options.outsideTolerance;
   parameters.cellSize = options.cellSize > 0.0 ? options.cellSize : 2.0 * spacing;
+  parameters.period = seeding.period;
 
   ThreadPool pool(options.threads);
   PackingSimulation sim(containerIndex, containerArea, parameters, pool);
@@ -261,6 +268,7 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Repulsio
   report();
   Packing packing = collectPacking(sim, types, frame, scene.container);
   packing.stopReason = reason;
+  packing.tile = isTiled(options.tile) ? options.tile : Vec2{};
   return packing;
 }
 
