@@ -49,6 +49,10 @@ struct RepulsionOptions {
   // moves only by growth; true, the measured skin area as in the thesis (jitters more).
   bool stallOnMeasuredArea = false;
   int maxIterations = 30000;
+  // --- shape matching (4.7): elements whose shape fits are placed at the container's salient
+  // convex corners instead of random seeds and held there by docking springs
+  bool shapeMatching = false;
+  double dockingStrength = 20.0;  // k of the docking spring from a matched tip vertex to its corner
   // --- run
   std::uint64_t seed = 1;
   int threads = 0;                // 0: all cores; results do not depend on it
@@ -94,6 +98,11 @@ struct Packing {
   double skinFill = 0.0;         // skin area / container area
   int vertexCount = 0;
   int springCount = 0;
+  // Shape matching (empty / 0 when off): the salient corners (input coordinates), how many
+  // elements were docked at them, and the matching stage's time.
+  std::vector<Vec2> salientCorners;
+  int dockedElements = 0;
+  double shapeMatchingSeconds = 0.0;
 };
 
 // Throws InputError for an empty library or container, or bad options.
