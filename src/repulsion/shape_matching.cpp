@@ -268,6 +268,11 @@ ShapeMatch matchCorners(const Region& input, const std::vector<Ring>& elementSki
       poses[f] = alignDescriptors(elements[e].descriptorPoints(sample), target);
       for (Vec2 p : elements[e].samples) window.add(poses[f].apply(p));
     }
+    // Beyond the container's bounding square (plus a margin) the grid's border value stands in
+    // for the distance: such a sample is outside and penalised either way.
+    const double margin = 0.05 * ls;
+    window = {Vec2{std::max(window.min.x, box.min.x - margin), std::max(window.min.y, box.min.y - margin)},
+              Vec2{std::min(window.max.x, box.max.x + margin), std::min(window.max.y, box.max.y + margin)}};
     window.add(window.min - Vec2{2 * cell, 2 * cell});
     window.add(window.max + Vec2{2 * cell, 2 * cell});
     const DistanceGrid sdf = signedDistanceField(

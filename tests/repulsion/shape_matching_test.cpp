@@ -6,7 +6,9 @@
 #include <numbers>
 
 #include "pak/closest_point.hpp"
+#include "pak/packing_drawing.hpp"
 #include "pak/repulsion.hpp"
+#include "pak/svg_writer.hpp"
 #include "pak/verify.hpp"
 
 using namespace pak;
@@ -160,11 +162,20 @@ TEST(ShapeMatching, FitScoreFollowsEquation410) {
   EXPECT_LT(fitScore(-100.0, 1.0, 0.001, mu), 1e-6);
 }
 
-TEST(ShapeMatching, DockedElementsReachEveryCornerOfAStarWithoutOverlaps) {
+namespace {
+
+Scene starScene() {
   Scene scene;
   scene.source = "star";
   scene.container = {Polygon{star({0, 0}, 100, 42), {}}};
-  Library library{element(equilateral({0, 0}, 10, 0.2), "triangle"), element(circle({0, 0}, 6, 60), "disc")};
+  return scene;
+}
+
+Library triangleAndDisc() {
+  return {element(equilateral({0, 0}, 10, 0.2), "triangle"), element(circle({0, 0}, 6, 60), "disc")};
+}
+
+RepulsionOptions starOptions() {
   RepulsionOptions options;
   options.count = 10;
   options.gap = 12.0;
@@ -172,6 +183,25 @@ TEST(ShapeMatching, DockedElementsReachEveryCornerOfAStarWithoutOverlaps) {
   options.maxIterations = 1500;
   options.seed = 2;
   options.shapeMatching = true;
+  return options;
+}
+
+}  // namespace
+
+TEST(ShapeMatching, DockedRunIsTheSameWhateverTheThreadCount) {
+  RepulsionOptions options = starOptions();
+  options.maxIterations = 300;
+  options.threads = 1;
+  std::string one = toSvgString(packingDrawing(starScene(), packRepulsion(starScene(), triangleAndDisc(), options)));
+  options.threads = 3;
+  std::string three = toSvgString(packingDrawing(starScene(), packRepulsion(starScene(), triangleAndDisc(), options)));
+  EXPECT_EQ(one, three);
+}
+
+TEST(ShapeMatching, DockedElementsReachEveryCornerOfAStarWithoutOverlaps) {
+  Scene scene = starScene();
+  Library library = triangleAndDisc();
+  RepulsionOptions options = starOptions();
   Packing packing = packRepulsion(scene, library, options);
   ASSERT_EQ(packing.salientCorners.size(), 5u);
   EXPECT_EQ(packing.dockedElements, 5);
