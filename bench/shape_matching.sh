@@ -38,7 +38,7 @@ done
 python3 - "$csv" <<'PY'
 import csv, statistics, sys
 rows = list(csv.DictReader(open(sys.argv[1])))
-print("container  matching  corners  corner→art distance mean ± sd  matching ms mean  art fill mean  overlaps")
+print("container  matching  corners  corner→art distance mean ± sd  matching ms mean  art fill mean  overlaps  outside")
 for name in ("heart", "star"):
     for mode in ("off", "on"):
         rs = [r for r in rows if r["container"] == name and r["matching"] == mode]
@@ -47,5 +47,5 @@ for name in ("heart", "star"):
         fill = [float(r["fill_art"]) for r in rs]
         print(f"{name:9s}  {mode:8s}  {rs[0]['corners']:7s}  {statistics.mean(d):8.2f} ± {statistics.stdev(d):6.2f}"
               f"               {statistics.mean(ms):8.1f}          {statistics.mean(fill):.3f}       "
-              f"{sum(int(r['overlaps']) for r in rs)}")
+              f"{sum(int(r['overlaps']) for r in rs):8d}  {sum(int(r['outside']) for r in rs):7d}")
 PY

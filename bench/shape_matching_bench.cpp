@@ -13,7 +13,8 @@
 
 namespace {
 
-const std::string kData = "/work/shared/data";
+// Run from the repository root, as bench/run.sh does: the shared data sits beside it.
+const std::string kData = "../shared/data";
 
 void matchCornersOf(benchmark::State& state, const std::string& containerFile, const std::vector<std::string>& elements) {
   if (!std::filesystem::exists(containerFile)) {

@@ -24,9 +24,12 @@ double turnAngle(Vec2 a, Vec2 b, Vec2 c) {
 double arclengthOfTau(const RingDescriptors& d, double value, bool forward) {
   const double total = d.cumulative.back();
   const double perimeter = d.spacing * static_cast<double>(d.samples.size());
-  const double laps = std::floor(value / total);
+  double laps = std::floor(value / total);
   double r = value - laps * total;
-  if (r >= total) r = 0.0;  // rounding
+  if (r >= total) {  // rounding
+    r = 0.0;
+    laps += 1.0;
+  }
   const auto begin = d.cumulative.begin(), end = d.cumulative.end();
   // Forward: first knot with C ≥ r; backward: first knot with C > r. Either way C is linear
   // between knot k - 1 and k (the trapezoid rule with linear interpolation inside a step).
@@ -80,12 +83,17 @@ using DescriptorTree =
 
 namespace {
 
-// Every ring of a normalized region (outer rings, then their holes), interior on the left.
+// Every ring of a normalized region (outer rings, then their holes), interior on the left;
+// degenerate rings (fewer than 3 distinct vertices) have no corners and are skipped.
 std::vector<RingDescriptors> describeRegion(const Region& region, double spacing, double tau, int steps) {
   std::vector<RingDescriptors> rings;
+  auto add = [&](const Ring& ring) {
+    if (cleanRing(ring).size() >= 3 && std::abs(signedArea(ring)) > 0.0)
+      rings.push_back(describeRing(ring, spacing, tau, steps));
+  };
   for (const Polygon& p : region) {
-    rings.push_back(describeRing(p.outer, spacing, tau, steps));
-    for (const Ring& h : p.holes) rings.push_back(describeRing(h, spacing, tau, steps));
+    add(p.outer);
+    for (const Ring& h : p.holes) add(h);
   }
   return rings;
 }
