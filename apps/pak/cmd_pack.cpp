@@ -20,6 +20,7 @@
 #include "pak/shape_matching.hpp"
 #include "pak/svg_writer.hpp"
 #include "pak/text_file.hpp"
+#include "pak/tiling.hpp"
 #include "pak/verify.hpp"
 
 namespace pak::cli {
@@ -70,6 +71,8 @@ struct PackArguments {
   std::string container;
   std::vector<std::string> elements;
   std::string output, png, config, report, snapshots;
+  std::string tile, tilePreview;  // --tile W,H; --tile-preview FILE.png
+  int tilePreviewRepeat = 3;
   int pngWidth = 1200;
   int every = 500;
   int progressEvery = 0;
@@ -128,6 +131,16 @@ void applyConfig(PackArguments& args) {
   }
 }
 
+// "W,H" (input units) for --tile.
+Vec2 parseTileSize(const std::string& text) {
+  double w = 0.0, h = 0.0;
+  char extra = 0;
+  if (std::sscanf(text.c_str(), " %lf , %lf %c", &w, &h, &extra) != 2 || !(w > 0.0 && h > 0.0) || !std::isfinite(w) ||
+      !std::isfinite(h))
+    throw InputError("", "--tile expects W,H with two positive numbers, got \"" + text + "\"");
+  return {w, h};
+}
+
 std::string formatSeconds(double s) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.1f s", s);
@@ -140,7 +153,13 @@ int runPack(PackArguments& args) {
   if (!args.config.empty()) applyConfig(args);
   args.options.seed = args.seed;
 
-  Scene scene = loadScene(args.container);
+  if (!args.tile.empty()) args.options.tile = parseTileSize(args.tile);
+  const bool tiled = isTiled(args.options.tile);
+  if (tiled && !args.container.empty()) throw InputError(args.container, "--tile packs its own rectangle; give no --container");
+  if (!tiled && args.container.empty()) throw InputError("", "--container is required (or --tile W,H)");
+  if (!args.tilePreview.empty() && !tiled) throw InputError(args.tilePreview, "--tile-preview needs --tile W,H");
+  if (args.tilePreviewRepeat < 1 || args.tilePreviewRepeat > 16) throw InputError("", "--tile-preview-repeat must be 1 to 16");
+  Scene scene = tiled ? tileScene(args.options.tile) : loadScene(args.container);
   Library library = loadLibrary(args.elements);
   for (const Warning& w : scene.warnings)
     if (!args.quiet) std::fprintf(stderr, "pak: warning: %s: %s\n", w.where.c_str(), w.message.c_str());
@@ -183,9 +202,17 @@ int runPack(PackArguments& args) {
     png.width = args.pngWidth;
     writePngFile(drawing, args.png, png);
   }
+  if (!args.tilePreview.empty()) {
+    PngOptions png;
+    png.width = args.pngWidth;
+    int n = args.tilePreviewRepeat;
+    writePngFile(tileRepetition(drawing, args.options.tile, n, n), args.tilePreview, png);
+  }
 
   // Invariants of the result, on the art as drawn.
   std::vector<Region> outlines = artOutlines(packing);
+  // A tile is checked on the torus: every clone's piece inside the tile, seams included.
+  if (tiled) outlines = periodicRepetition(outlines, packing.tile, 1, 1);
   double containerArea = area(packing.container);
   PackingCheckOptions checkOptions;
   checkOptions.areaTolerance = 1e-6 * containerArea;
@@ -215,6 +242,7 @@ int runPack(PackArguments& args) {
     report["parameters"] = parameters;
     report["units"] = "distances in canonical units: the container's bounding square is 1000 wide";
     report["container"] = args.container;
+    if (tiled) report["tile"] = {args.options.tile.x, args.options.tile.y};
     report["elements-library"] = args.elements;
     report["seed"] = args.seed;
     report["iterations"] = packing.iterations;
@@ -263,7 +291,12 @@ const CommandRegistrar registrar{{"pack", [](CLI::App& app) {
       "Elements are meshed, seeded small, then repel, grow and deform until the container is full.\n"
       "Example: pak pack --container heart.svg --elements animals/ -o out.svg --png out.png");
   args->command = cmd;
-  cmd->add_option("--container,-c", args->container, "scene or container file (.svg or .path)")->required();
+  cmd->add_option("--container,-c", args->container, "scene or container file (.svg or .path); required unless --tile");
+  cmd->add_option("--tile", args->tile,
+                  "pack a tileable W,H rectangle (input units) instead of a container: elements crossing an edge "
+                  "come back on the opposite one (thesis 4.8)");
+  cmd->add_option("--tile-preview", args->tilePreview, "with --tile: also render an N x N repetition of the tile to this PNG");
+  cmd->add_option("--tile-preview-repeat", args->tilePreviewRepeat, "N for --tile-preview")->capture_default_str();
   cmd->add_option("--elements,-e", args->elements, "element files and/or folders of .svg/.path files")->required();
   cmd->add_option("-o,--output", args->output, "output SVG")->required();
   cmd->add_option("--png", args->png, "also render a PNG preview to this file");

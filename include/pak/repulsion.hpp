@@ -53,6 +53,10 @@ struct RepulsionOptions {
   // convex corners instead of random seeds and held there by docking springs
   bool shapeMatching = false;
   double dockingStrength = 20.0;  // k of the docking spring from a matched tip vertex to its corner
+  // --- tileable packing (thesis 4.8): W × H > 0 packs the periodic rectangle [0, W] × [0, H]
+  // (input units) instead of the scene's container; clones in the 8 neighbouring cells act
+  // on their originals, so the result tiles the plane. See docs/tiling.md.
+  Vec2 tile{};
   // --- run
   std::uint64_t seed = 1;
   int threads = 0;                // 0: all cores; results do not depend on it
@@ -103,6 +107,7 @@ struct Packing {
   std::vector<Vec2> salientCorners;
   int dockedElements = 0;
   double shapeMatchingSeconds = 0.0;
+  Vec2 tile{};                   // W × H of a tileable packing (input units); 0: not tiled
 };
 
 // Throws InputError for an empty library or container, or bad options.

@@ -10,6 +10,7 @@
 #include "pak/clipping.hpp"
 #include "pak/error.hpp"
 #include "pak/repulsion.hpp"
+#include "pak/tiling.hpp"
 #include "seeding.hpp"
 
 namespace pak {
@@ -59,6 +60,8 @@ void checkOptions(const RepulsionOptions& o) {
     throw InputError("", "mesh spacing, count, cell size, max iterations and stall window must not be negative");
   if (!(o.dockingStrength >= 0.0) || !std::isfinite(o.dockingStrength))
     throw InputError("", "docking strength must be a non-negative number");
+  if (o.tile != Vec2{} && !isTiled(o.tile)) throw InputError("", "tile size must be two positive numbers W,H");
+  if (o.shapeMatching && isTiled(o.tile)) throw InputError("", "shape matching needs container corners; a tile has none");
   if (o.count > 100000) throw InputError("", "count " + std::to_string(o.count) + " is absurdly large");
   for (double k : {o.repulsionStrength, o.overlapStrength, o.boundaryStrength, o.edgeStrength,
                    o.negativeSpaceStrength, o.torsionStrength, o.soft, o.growthRate, o.stallEpsilon})
@@ -116,7 +119,7 @@ std::vector<PreparedElement> prepareLibrary(const Library& library, double nomin
 
 // Skins of the seeded meshes at growth g: overlap-free and inside the container?
 bool seedingIsClear(const std::vector<PreparedElement>& types, const std::vector<Seed>& seeds, double g,
-                    const RegionIndex& container) {
+                    const RegionIndex& container, Vec2 period = {}) {
   std::vector<Region> skins;
   std::vector<Box> boxes;
   for (const Seed& s : seeds) {
@@ -124,7 +127,7 @@ bool seedingIsClear(const std::vector<PreparedElement>& types, const std::vector
     Ring ring;
     for (int k = 0; k < mesh.boundaryCount; ++k) {
       Vec2 p = s.position + rotated(mesh.mesh.vertices[k] - mesh.restCentroid, s.angle) * g;
-      if (!container.query(p, false).inside) return false;
+      if (!isTiled(period) && !container.query(p, false).inside) return false;  // a tile has no walls
       ring.push_back(p);
     }
     boxes.push_back(bounds(ring));
@@ -133,7 +136,7 @@ bool seedingIsClear(const std::vector<PreparedElement>& types, const std::vector
   for (std::size_t i = 0; i < skins.size(); ++i)
     for (std::size_t j = i + 1; j < skins.size(); ++j)
       if (boxes[i].overlaps(boxes[j]) && area(intersect(skins[i], skins[j])) > 0.0) return false;
-  return true;
+  return !isTiled(period) || !clonesOverlap(skins, period);
 }
 
 Packing collectPacking(const PackingSimulation& sim, const std::vector<PreparedElement>& types,
@@ -175,6 +178,9 @@ Packing collectPacking(const PackingSimulation& sim, const std::vector<PreparedE
 Packing packRepulsion(const Scene& scene, const Library& library, const RepulsionOptions& options,
                       const RepulsionCallbacks& callbacks) {
   checkOptions(options);
+  // Tile mode packs the rectangle [0, W] × [0, H] in place of the scene's container.
+  if (isTiled(options.tile) && !isTileScene(scene, options.tile))
+    return packRepulsion(tileScene(options.tile), library, options, callbacks);
   if (library.empty()) throw InputError("", "no elements to pack");
   Box box = bounds(scene.container);
   double containerAreaInput = area(scene.container);
@@ -197,6 +203,7 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Repulsio
   seeding.count = count;
   seeding.types = static_cast<int>(types.size());
   seeding.seed = options.seed;
+  seeding.period = isTiled(options.tile) ? options.tile * frame.scale : Vec2{};
   std::vector<Seed> seeds = seedElements(container, containerIndex, seeding);
   if (seeds.empty()) throw InputError(scene.source, "container too small to seed any element");
   // Shape matching (4.7): elements that fit the salient corners take the nearest seeds.
@@ -215,7 +222,7 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Repulsio
   for (const Seed& s : seeds) seededSkin += types[s.type].mesh.skinArea;
   double g0 = std::sqrt(options.initialCoverage * containerArea / seededSkin);
   if (docking) docking->position(g0, containerIndex, seeds);
-  for (int attempt = 0; attempt < 30 && !seedingIsClear(types, seeds, g0, containerIndex); ++attempt) {
+  for (int attempt = 0; attempt < 30 && !seedingIsClear(types, seeds, g0, containerIndex, seeding.period); ++attempt) {
     g0 *= 0.9;
     if (docking) docking->position(g0, containerIndex, seeds);
   }
@@ -234,6 +241,7 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Repulsio
   parameters.growthRate = options.growthRate;
   parameters.outsideTolerance = options.outsideTolerance;
   parameters.cellSize = options.cellSize > 0.0 ? options.cellSize : 2.0 * spacing;
+  parameters.period = seeding.period;
 
   ThreadPool pool(options.threads);
   PackingSimulation sim(containerIndex, containerArea, parameters, pool);
@@ -286,6 +294,7 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Repulsio
     packing.dockedElements = docking->dockedCount();
     packing.shapeMatchingSeconds = matchingSeconds;
   }
+  packing.tile = isTiled(options.tile) ? options.tile : Vec2{};
   return packing;
 }
 
