@@ -5,16 +5,19 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <thread>
 
 #include "command.hpp"
 #include "pak/atomic_file.hpp"
+#include "pak/closest_point.hpp"
 #include "pak/error.hpp"
 #include "pak/packing_drawing.hpp"
 #include "pak/png_renderer.hpp"
 #include "pak/repulsion.hpp"
 #include "pak/scene_loader.hpp"
+#include "pak/shape_matching.hpp"
 #include "pak/svg_writer.hpp"
 #include "pak/text_file.hpp"
 #include "pak/tiling.hpp"
@@ -54,6 +57,7 @@ const NumberOption kNumberOptions[] = {
     {"growth-rate", &RepulsionOptions::growthRate, "k_g: growth factor increase per unit time while an element has room"},
     {"cell-size", &RepulsionOptions::cellSize, "neighbour grid cell and repulsion reach, canonical units (0: 2 × mesh spacing)"},
     {"outside-tolerance", &RepulsionOptions::outsideTolerance, "a mesh pushed further than this outside the container stops growing (canonical units; 1e9: never, as in the thesis)"},
+    {"docking-strength", &RepulsionOptions::dockingStrength, "with --shape-matching: spring strength holding each matched element's tip on its corner"},
     {"stall-epsilon", &RepulsionOptions::stallEpsilon, "ε of eq. 4.7: stop when the RMS fill change per iteration falls below it"},
 };
 const IntegerOption kIntegerOptions[] = {
@@ -89,7 +93,7 @@ void applyConfig(PackArguments& args) {
   }
   if (!json.is_object()) throw InputError(args.config, "expected a JSON object of option names to values");
   for (auto& [key, value] : json.items()) {
-    bool isOption = key == "seed" || key == "stall-on-measured-area";
+    bool isOption = key == "seed" || key == "stall-on-measured-area" || key == "shape-matching";
     for (const auto& o : kNumberOptions) isOption |= key == o.name;
     for (const auto& o : kIntegerOptions) isOption |= key == o.name;
     if (!isOption) throw InputError(args.config, "unknown option \"" + key + "\"");
@@ -111,6 +115,11 @@ void applyConfig(PackArguments& args) {
     if (key == "stall-on-measured-area") {
       if (!value.is_boolean()) throw InputError(args.config, "\"stall-on-measured-area\" must be true or false");
       args.options.stallOnMeasuredArea = value.get<bool>();
+      known = true;
+    }
+    if (key == "shape-matching") {
+      if (!value.is_boolean()) throw InputError(args.config, "\"shape-matching\" must be true or false");
+      args.options.shapeMatching = value.get<bool>();
       known = true;
     }
     if (key == "seed") {
@@ -227,6 +236,7 @@ int runPack(PackArguments& args) {
     for (const auto& o : kIntegerOptions) parameters[o.name] = args.options.*o.field;
     parameters["seed"] = args.seed;
     parameters["stall-on-measured-area"] = args.options.stallOnMeasuredArea;
+    parameters["shape-matching"] = args.options.shapeMatching;
     parameters["threads-used"] = args.options.threads > 0 ? args.options.threads
                                                           : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     report["parameters"] = parameters;
@@ -250,6 +260,24 @@ int runPack(PackArguments& args) {
     report["outside-area"] = check.outsideArea;
     report["problems"] = check.problems;
     report["canonical-scale"] = packing.canonicalScale;
+    // Thesis 4.7's salient convex corners and how close the art comes to each (canonical
+    // units), with or without shape matching, so runs can be compared.
+    nlohmann::json corners = nlohmann::json::array();
+    double cornerSum = 0.0;
+    for (const SalientCorner& c : salientContainerCorners(packing.container)) {
+      double nearest = std::numeric_limits<double>::infinity();
+      for (const Region& r : outlines) nearest = std::min(nearest, closestPointOnBoundary(c.position, r).distance);
+      nearest *= packing.canonicalScale;
+      cornerSum += nearest;
+      corners.push_back({{"x", c.position.x}, {"y", c.position.y}, {"art-distance", nearest}});
+    }
+    report["salient-corners"] = corners;
+    report["corner-art-distance-mean"] = corners.empty() ? 0.0 : cornerSum / static_cast<double>(corners.size());
+    if (args.options.shapeMatching) {
+      report["shape-matching"] = {{"corners", packing.salientCorners.size()},
+                                  {"docked-elements", packing.dockedElements},
+                                  {"matching-seconds", packing.shapeMatchingSeconds}};
+    }
     writeFileAtomically(args.report, report.dump(2) + "\n");
   }
   return 0;
@@ -286,6 +314,8 @@ const CommandRegistrar registrar{{"pack", [](CLI::App& app) {
   cmd->add_option("--every", args->every, "snapshot interval in iterations")->capture_default_str();
   cmd->add_flag("--stall-on-measured-area", args->options.stallOnMeasuredArea,
                 "apply eq. 4.7 to the measured skin area, as the thesis does, instead of the meshes' rest area");
+  cmd->add_flag("--shape-matching", args->options.shapeMatching,
+                "place elements that fit the container's sharp convex corners there first and dock them (thesis 4.7)");
   cmd->add_flag("--debug-layers", args->debugLayers, "add the skins and meshes as extra layers");
   cmd->add_flag("--quiet,-q", args->quiet, "no progress output");
   cmd->add_option("--progress-every", args->progressEvery,

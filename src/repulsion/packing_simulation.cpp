@@ -286,6 +286,11 @@ void PackingSimulation::applyCornerForces() {
   }
 }
 
+void PackingSimulation::applyDockForces() {
+  for (const Dock& dock : docks_)
+    if (!meshes_[meshOf_[dock.vertex]].frozen) force_[dock.vertex] += (dock.anchor - position_[dock.vertex]) * dockStrength_;
+}
+
 void PackingSimulation::integrate(std::size_t vertexBegin, std::size_t vertexEnd) {
   const double dt = parameters_.timeStep, cap = parameters_.velocityCap;
   const double keep = 1.0 - parameters_.damping;
@@ -325,6 +330,7 @@ void PackingSimulation::step() {
   pool_.parallelFor(meshes_.size(), 4, [this](std::size_t b, std::size_t e) { prepareSkins(b, e); });
   pool_.parallelFor(position_.size(), kVertexGrain, [this](std::size_t b, std::size_t e) { computeForces(b, e); });
   applyCornerForces();
+  if (!docks_.empty()) applyDockForces();
   pool_.parallelFor(position_.size(), kVertexGrain, [this](std::size_t b, std::size_t e) { integrate(b, e); });
   // Flags come from this step's force pass; areas from the new positions.
   updateMeshes(0, meshes_.size());

@@ -61,6 +61,10 @@ class PackingSimulation {
   struct Corner { Vec2 position; Vec2 inward; };
   void setContainerCorners(std::vector<Corner> corners) { corners_ = std::move(corners); }
   static std::vector<Corner> reflexCorners(const Region& container);
+  // Docking springs (shape matching, thesis 4.7): each pulls one vertex toward its anchor with
+  // force strength × (anchor − x), holding a matched element at its container corner.
+  struct Dock { int vertex; Vec2 anchor; };
+  void setDocks(std::vector<Dock> docks, double strength) { docks_ = std::move(docks); dockStrength_ = strength; }
 
   void step();
 
@@ -89,6 +93,7 @@ class PackingSimulation {
   void integrate(std::size_t vertexBegin, std::size_t vertexEnd);
   void updateMeshes(std::size_t meshBegin, std::size_t meshEnd);
   void applyCornerForces();
+  void applyDockForces();
 
   // The closest skin point of each mesh (other than `excludeMesh`) within the cut-off of p.
   static constexpr int kMaxNeighbours = 24;
@@ -134,6 +139,8 @@ class PackingSimulation {
   std::vector<Vec2> meshCentre_;
   std::vector<std::uint8_t> meshOnCorner_;  // a container corner is inside this mesh
   std::vector<Corner> corners_;
+  std::vector<Dock> docks_;
+  double dockStrength_ = 0.0;
   SegmentGrid grid_;
   Box vertexExtent_;  // periodic domain: bounds of all vertices, to skip far clones
 

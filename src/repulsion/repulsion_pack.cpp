@@ -1,8 +1,11 @@
 // packRepulsion: canonical frame, element preparation, seeding, simulation, art replay.
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <optional>
 #include <string>
 
+#include "corner_docking.hpp"
 #include "packing_simulation.hpp"
 #include "pak/clipping.hpp"
 #include "pak/error.hpp"
@@ -55,7 +58,10 @@ void checkOptions(const RepulsionOptions& o) {
   if (!(o.damping >= 0.0 && o.damping < 1.0)) throw InputError("", "damping must be in [0, 1)");
   if (o.meshSpacing < 0.0 || o.count < 0 || o.maxIterations < 0 || o.stallWindow < 1 || o.cellSize < 0.0)
     throw InputError("", "mesh spacing, count, cell size, max iterations and stall window must not be negative");
+  if (!(o.dockingStrength >= 0.0) || !std::isfinite(o.dockingStrength))
+    throw InputError("", "docking strength must be a non-negative number");
   if (o.tile != Vec2{} && !isTiled(o.tile)) throw InputError("", "tile size must be two positive numbers W,H");
+  if (o.shapeMatching && isTiled(o.tile)) throw InputError("", "shape matching needs container corners; a tile has none");
   if (o.count > 100000) throw InputError("", "count " + std::to_string(o.count) + " is absurdly large");
   for (double k : {o.repulsionStrength, o.overlapStrength, o.boundaryStrength, o.edgeStrength,
                    o.negativeSpaceStrength, o.torsionStrength, o.soft, o.growthRate, o.stallEpsilon})
@@ -200,12 +206,26 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Repulsio
   seeding.period = isTiled(options.tile) ? options.tile * frame.scale : Vec2{};
   std::vector<Seed> seeds = seedElements(container, containerIndex, seeding);
   if (seeds.empty()) throw InputError(scene.source, "container too small to seed any element");
+  // Shape matching (4.7): elements that fit the salient corners take the nearest seeds.
+  std::optional<CornerDocking> docking;
+  const auto matchingStart = std::chrono::steady_clock::now();
+  if (options.shapeMatching) {
+    std::vector<const ElementMesh*> meshes;
+    std::vector<const Region*> outlines;
+    for (const PreparedElement& t : types) { meshes.push_back(&t.mesh); outlines.push_back(&t.outline); }
+    docking.emplace(container, meshes, outlines, options.gap, seeds);
+  }
+  const double matchingSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - matchingStart).count();
 
   // Shrink everything alike until the seeded skins cover `initialCoverage` without overlap.
   double seededSkin = 0.0;
   for (const Seed& s : seeds) seededSkin += types[s.type].mesh.skinArea;
   double g0 = std::sqrt(options.initialCoverage * containerArea / seededSkin);
-  for (int attempt = 0; attempt < 30 && !seedingIsClear(types, seeds, g0, containerIndex, seeding.period); ++attempt) g0 *= 0.9;
+  if (docking) docking->position(g0, containerIndex, seeds);
+  for (int attempt = 0; attempt < 30 && !seedingIsClear(types, seeds, g0, containerIndex, seeding.period); ++attempt) {
+    g0 *= 0.9;
+    if (docking) docking->position(g0, containerIndex, seeds);
+  }
 
   SimulationParameters parameters;
   parameters.repulsionStrength = options.repulsionStrength;
@@ -227,6 +247,7 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Repulsio
   PackingSimulation sim(containerIndex, containerArea, parameters, pool);
   for (const Seed& s : seeds) sim.addMesh(types[s.type].mesh, s.type, s.position, s.angle, g0);
   sim.setContainerCorners(PackingSimulation::reflexCorners(container));
+  if (docking) sim.setDocks(docking->docks(sim), options.dockingStrength);
   Box area = bounds(container);
   Vec2 margin{0.1 * kCanonicalSide, 0.1 * kCanonicalSide};
   area.add(area.min - margin);
@@ -268,6 +289,11 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Repulsio
   report();
   Packing packing = collectPacking(sim, types, frame, scene.container);
   packing.stopReason = reason;
+  if (docking) {
+    for (const SalientCorner& c : docking->match().corners) packing.salientCorners.push_back(frame.toInput(c.position));
+    packing.dockedElements = docking->dockedCount();
+    packing.shapeMatchingSeconds = matchingSeconds;
+  }
   packing.tile = isTiled(options.tile) ? options.tile : Vec2{};
   return packing;
 }
