@@ -5,19 +5,23 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <thread>
 
 #include "command.hpp"
 #include "pak/atomic_file.hpp"
+#include "pak/closest_point.hpp"
 #include "pak/error.hpp"
 #include "pak/packing_drawing.hpp"
 #include "pak/png_renderer.hpp"
 #include "pak/repulsion.hpp"
 #include "pak/repulsion_presets.hpp"
 #include "pak/scene_loader.hpp"
+#include "pak/shape_matching.hpp"
 #include "pak/svg_writer.hpp"
 #include "pak/text_file.hpp"
+#include "pak/tiling.hpp"
 #include "pak/verify.hpp"
 
 namespace pak::cli {
@@ -54,6 +58,7 @@ const NumberOption kNumberOptions[] = {
     {"growth-rate", &RepulsionOptions::growthRate, "k_g: growth factor increase per unit time while an element has room"},
     {"cell-size", &RepulsionOptions::cellSize, "neighbour grid cell and repulsion reach, canonical units (0: 2 × mesh spacing)"},
     {"outside-tolerance", &RepulsionOptions::outsideTolerance, "a mesh pushed further than this outside the container stops growing (canonical units; 1e9: never, as in the thesis)"},
+    {"docking-strength", &RepulsionOptions::dockingStrength, "with --shape-matching: spring strength holding each matched element's tip on its corner"},
     {"stall-epsilon", &RepulsionOptions::stallEpsilon, "ε of eq. 4.7: stop when the RMS fill change per iteration falls below it"},
     {"secondary-scale", &RepulsionOptions::secondaryScale, "nominal size of a secondary element relative to a primary one (linear)"},
     {"secondary-min-distance", &RepulsionOptions::secondaryMinDistance, "d_min: secondaries go only where the negative space is at least this far from any element or wall (canonical units; 0: max(gap, L / 4), L the nominal secondary size)"},
@@ -74,6 +79,8 @@ struct PackArguments {
   std::string preset;
   bool rigid = false;
   std::string output, png, config, report, snapshots;
+  std::string tile, tilePreview;  // --tile W,H; --tile-preview FILE.png
+  int tilePreviewRepeat = 3;
   int pngWidth = 1200;
   int every = 500;
   int progressEvery = 0;
@@ -94,7 +101,7 @@ void applyConfig(PackArguments& args) {
   }
   if (!json.is_object()) throw InputError(args.config, "expected a JSON object of option names to values");
   for (auto& [key, value] : json.items()) {
-    bool isOption = key == "seed" || key == "stall-on-measured-area";
+    bool isOption = key == "seed" || key == "stall-on-measured-area" || key == "shape-matching";
     for (const auto& o : kNumberOptions) isOption |= key == o.name;
     for (const auto& o : kIntegerOptions) isOption |= key == o.name;
     if (!isOption) throw InputError(args.config, "unknown option \"" + key + "\"");
@@ -118,6 +125,11 @@ void applyConfig(PackArguments& args) {
       args.options.stallOnMeasuredArea = value.get<bool>();
       known = true;
     }
+    if (key == "shape-matching") {
+      if (!value.is_boolean()) throw InputError(args.config, "\"shape-matching\" must be true or false");
+      args.options.shapeMatching = value.get<bool>();
+      known = true;
+    }
     if (key == "seed") {
       if (!value.is_number_unsigned()) throw InputError(args.config, "\"seed\" must be a non-negative integer");
       args.seed = value.get<std::uint64_t>();
@@ -125,6 +137,16 @@ void applyConfig(PackArguments& args) {
     }
     if (!known) throw InputError(args.config, "unknown option \"" + key + "\"");
   }
+}
+
+// "W,H" (input units) for --tile.
+Vec2 parseTileSize(const std::string& text) {
+  double w = 0.0, h = 0.0;
+  char extra = 0;
+  if (std::sscanf(text.c_str(), " %lf , %lf %c", &w, &h, &extra) != 2 || !(w > 0.0 && h > 0.0) || !std::isfinite(w) ||
+      !std::isfinite(h))
+    throw InputError("", "--tile expects W,H with two positive numbers, got \"" + text + "\"");
+  return {w, h};
 }
 
 std::string formatSeconds(double s) {
@@ -151,7 +173,13 @@ int runPack(PackArguments& args) {
   if (!args.config.empty()) applyConfig(args);
   args.options.seed = args.seed;
 
-  Scene scene = loadScene(args.container);
+  if (!args.tile.empty()) args.options.tile = parseTileSize(args.tile);
+  const bool tiled = isTiled(args.options.tile);
+  if (tiled && !args.container.empty()) throw InputError(args.container, "--tile packs its own rectangle; give no --container");
+  if (!tiled && args.container.empty()) throw InputError("", "--container is required (or --tile W,H)");
+  if (!args.tilePreview.empty() && !tiled) throw InputError(args.tilePreview, "--tile-preview needs --tile W,H");
+  if (args.tilePreviewRepeat < 1 || args.tilePreviewRepeat > 16) throw InputError("", "--tile-preview-repeat must be 1 to 16");
+  Scene scene = tiled ? tileScene(args.options.tile) : loadScene(args.container);
   Library library = loadLibrary(args.elements);
   Library secondaryLibrary = args.secondary.empty() ? Library{} : loadLibrary(args.secondary);
   for (const Warning& w : scene.warnings)
@@ -195,9 +223,17 @@ int runPack(PackArguments& args) {
     png.width = args.pngWidth;
     writePngFile(drawing, args.png, png);
   }
+  if (!args.tilePreview.empty()) {
+    PngOptions png;
+    png.width = args.pngWidth;
+    int n = args.tilePreviewRepeat;
+    writePngFile(tileRepetition(drawing, args.options.tile, n, n), args.tilePreview, png);
+  }
 
   // Invariants of the result, on the art as drawn.
   std::vector<Region> outlines = artOutlines(packing);
+  // A tile is checked on the torus: every clone's piece inside the tile, seams included.
+  if (tiled) outlines = periodicRepetition(outlines, packing.tile, 1, 1);
   double containerArea = area(packing.container);
   PackingCheckOptions checkOptions;
   checkOptions.areaTolerance = 1e-6 * containerArea;
@@ -231,11 +267,13 @@ int runPack(PackArguments& args) {
     for (const auto& o : kIntegerOptions) parameters[o.name] = args.options.*o.field;
     parameters["seed"] = args.seed;
     parameters["stall-on-measured-area"] = args.options.stallOnMeasuredArea;
+    parameters["shape-matching"] = args.options.shapeMatching;
     parameters["threads-used"] = args.options.threads > 0 ? args.options.threads
                                                           : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     report["parameters"] = parameters;
     report["units"] = "distances in canonical units: the container's bounding square is 1000 wide";
     report["container"] = args.container;
+    if (tiled) report["tile"] = {args.options.tile.x, args.options.tile.y};
     report["elements-library"] = args.elements;
     report["seed"] = args.seed;
     report["iterations"] = packing.iterations;
@@ -275,6 +313,24 @@ int runPack(PackArguments& args) {
     report["outside-area"] = check.outsideArea;
     report["problems"] = check.problems;
     report["canonical-scale"] = packing.canonicalScale;
+    // Thesis 4.7's salient convex corners and how close the art comes to each (canonical
+    // units), with or without shape matching, so runs can be compared.
+    nlohmann::json corners = nlohmann::json::array();
+    double cornerSum = 0.0;
+    for (const SalientCorner& c : salientContainerCorners(packing.container)) {
+      double nearest = std::numeric_limits<double>::infinity();
+      for (const Region& r : outlines) nearest = std::min(nearest, closestPointOnBoundary(c.position, r).distance);
+      nearest *= packing.canonicalScale;
+      cornerSum += nearest;
+      corners.push_back({{"x", c.position.x}, {"y", c.position.y}, {"art-distance", nearest}});
+    }
+    report["salient-corners"] = corners;
+    report["corner-art-distance-mean"] = corners.empty() ? 0.0 : cornerSum / static_cast<double>(corners.size());
+    if (args.options.shapeMatching) {
+      report["shape-matching"] = {{"corners", packing.salientCorners.size()},
+                                  {"docked-elements", packing.dockedElements},
+                                  {"matching-seconds", packing.shapeMatchingSeconds}};
+    }
     writeFileAtomically(args.report, report.dump(2) + "\n");
   }
   return 0;
@@ -288,7 +344,12 @@ const CommandRegistrar registrar{{"pack", [](CLI::App& app) {
       "Elements are meshed, seeded small, then repel, grow and deform until the container is full.\n"
       "Example: pak pack --container heart.svg --elements animals/ -o out.svg --png out.png");
   args->command = cmd;
-  cmd->add_option("--container,-c", args->container, "scene or container file (.svg or .path)")->required();
+  cmd->add_option("--container,-c", args->container, "scene or container file (.svg or .path); required unless --tile");
+  cmd->add_option("--tile", args->tile,
+                  "pack a tileable W,H rectangle (input units) instead of a container: elements crossing an edge "
+                  "come back on the opposite one (thesis 4.8)");
+  cmd->add_option("--tile-preview", args->tilePreview, "with --tile: also render an N x N repetition of the tile to this PNG");
+  cmd->add_option("--tile-preview-repeat", args->tilePreviewRepeat, "N for --tile-preview")->capture_default_str();
   cmd->add_option("--elements,-e", args->elements, "element files and/or folders of .svg/.path files")->required();
   cmd->add_option("--secondary", args->secondary,
                   "secondary element files and/or folders: small elements packed into the pockets the primaries "
@@ -313,6 +374,8 @@ const CommandRegistrar registrar{{"pack", [](CLI::App& app) {
   cmd->add_option("--every", args->every, "snapshot interval in iterations")->capture_default_str();
   cmd->add_flag("--stall-on-measured-area", args->options.stallOnMeasuredArea,
                 "apply eq. 4.7 to the measured skin area, as the thesis does, instead of the meshes' rest area");
+  cmd->add_flag("--shape-matching", args->options.shapeMatching,
+                "place elements that fit the container's sharp convex corners there first and dock them (thesis 4.7)");
   cmd->add_flag("--debug-layers", args->debugLayers, "add the skins and meshes as extra layers");
   cmd->add_flag("--quiet,-q", args->quiet, "no progress output");
   cmd->add_option("--progress-every", args->progressEvery,

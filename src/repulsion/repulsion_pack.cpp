@@ -2,13 +2,16 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <string>
 
+#include "corner_docking.hpp"
 #include "packing_simulation.hpp"
 #include "pak/clipping.hpp"
 #include "pak/error.hpp"
 #include "pak/repulsion.hpp"
 #include "pak/rng.hpp"
+#include "pak/tiling.hpp"
 #include "secondary_seeding.hpp"
 #include "seeding.hpp"
 
@@ -57,6 +60,10 @@ void checkOptions(const RepulsionOptions& o) {
   if (!(o.damping >= 0.0 && o.damping < 1.0)) throw InputError("", "damping must be in [0, 1)");
   if (o.meshSpacing < 0.0 || o.count < 0 || o.maxIterations < 0 || o.stallWindow < 1 || o.cellSize < 0.0)
     throw InputError("", "mesh spacing, count, cell size, max iterations and stall window must not be negative");
+  if (!(o.dockingStrength >= 0.0) || !std::isfinite(o.dockingStrength))
+    throw InputError("", "docking strength must be a non-negative number");
+  if (o.tile != Vec2{} && !isTiled(o.tile)) throw InputError("", "tile size must be two positive numbers W,H");
+  if (o.shapeMatching && isTiled(o.tile)) throw InputError("", "shape matching needs container corners; a tile has none");
   if (o.count > 100000) throw InputError("", "count " + std::to_string(o.count) + " is absurdly large");
   if (!(o.secondaryScale > 0.0 && o.secondaryScale <= 10.0)) throw InputError("", "secondary scale must be in (0, 10]");
   if (!(o.secondaryMinDistance >= 0.0) || !(o.secondarySeparation >= 0.0) || !std::isfinite(o.secondaryMinDistance) ||
@@ -121,7 +128,7 @@ std::vector<PreparedElement> prepareLibrary(const Library& library, double nomin
 
 // Skins of the seeded meshes at growth g: overlap-free and inside the container?
 bool seedingIsClear(const std::vector<PreparedElement>& types, const std::vector<Seed>& seeds, double g,
-                    const RegionIndex& container) {
+                    const RegionIndex& container, Vec2 period = {}) {
   std::vector<Region> skins;
   std::vector<Box> boxes;
   for (const Seed& s : seeds) {
@@ -129,7 +136,7 @@ bool seedingIsClear(const std::vector<PreparedElement>& types, const std::vector
     Ring ring;
     for (int k = 0; k < mesh.boundaryCount; ++k) {
       Vec2 p = s.position + rotated(mesh.mesh.vertices[k] - mesh.restCentroid, s.angle) * g;
-      if (!container.query(p, false).inside) return false;
+      if (!isTiled(period) && !container.query(p, false).inside) return false;  // a tile has no walls
       ring.push_back(p);
     }
     boxes.push_back(bounds(ring));
@@ -138,7 +145,7 @@ bool seedingIsClear(const std::vector<PreparedElement>& types, const std::vector
   for (std::size_t i = 0; i < skins.size(); ++i)
     for (std::size_t j = i + 1; j < skins.size(); ++j)
       if (boxes[i].overlaps(boxes[j]) && area(intersect(skins[i], skins[j])) > 0.0) return false;
-  return true;
+  return !isTiled(period) || !clonesOverlap(skins, period);
 }
 
 Packing collectPacking(const PackingSimulation& sim, const std::vector<PreparedElement>& types,
@@ -258,6 +265,11 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Library&
                       const RepulsionOptions& options, const RepulsionCallbacks& callbacks) {
   const auto passStart = std::chrono::steady_clock::now();
   checkOptions(options);
+  // Tile mode packs the rectangle [0, W] × [0, H] in place of the scene's container.
+  if (isTiled(options.tile) && !secondaryLibrary.empty())
+    throw InputError("", "secondary elements are not supported in tile mode yet");
+  if (isTiled(options.tile) && !isTileScene(scene, options.tile))
+    return packRepulsion(tileScene(options.tile), library, options, callbacks);
   if (library.empty()) throw InputError("", "no elements to pack");
   Box box = bounds(scene.container);
   double containerAreaInput = area(scene.container);
@@ -297,14 +309,29 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Library&
   seeding.count = count;
   seeding.types = static_cast<int>(types.size());
   seeding.seed = options.seed;
+  seeding.period = isTiled(options.tile) ? options.tile * frame.scale : Vec2{};
   std::vector<Seed> seeds = seedElements(container, containerIndex, seeding);
   if (seeds.empty()) throw InputError(scene.source, "container too small to seed any element");
+  // Shape matching (4.7): elements that fit the salient corners take the nearest seeds.
+  std::optional<CornerDocking> docking;
+  const auto matchingStart = std::chrono::steady_clock::now();
+  if (options.shapeMatching) {
+    std::vector<const ElementMesh*> meshes;
+    std::vector<const Region*> outlines;
+    for (const PreparedElement& t : types) { meshes.push_back(&t.mesh); outlines.push_back(&t.outline); }
+    docking.emplace(container, meshes, outlines, options.gap, seeds);
+  }
+  const double matchingSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - matchingStart).count();
 
   // Shrink everything alike until the seeded skins cover `initialCoverage` without overlap.
   double seededSkin = 0.0;
   for (const Seed& s : seeds) seededSkin += types[s.type].mesh.skinArea;
   double g0 = std::sqrt(options.initialCoverage * containerArea / seededSkin);
-  for (int attempt = 0; attempt < 30 && !seedingIsClear(types, seeds, g0, containerIndex); ++attempt) g0 *= 0.9;
+  if (docking) docking->position(g0, containerIndex, seeds);
+  for (int attempt = 0; attempt < 30 && !seedingIsClear(types, seeds, g0, containerIndex, seeding.period); ++attempt) {
+    g0 *= 0.9;
+    if (docking) docking->position(g0, containerIndex, seeds);
+  }
 
   SimulationParameters parameters;
   parameters.repulsionStrength = options.repulsionStrength;
@@ -321,11 +348,13 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Library&
   parameters.outsideTolerance = options.outsideTolerance;
   parameters.cellSize = options.cellSize > 0.0 ? options.cellSize : 2.0 * spacing;
   parameters.occupiedArea = blockedArea;
+  parameters.period = seeding.period;
 
   ThreadPool pool(options.threads);
   PackingSimulation sim(containerIndex, containerArea + blockedArea, parameters, pool);
   for (const Seed& s : seeds) sim.addMesh(types[s.type].mesh, s.type, s.position, s.angle, g0);
   sim.setContainerCorners(PackingSimulation::reflexCorners(container));
+  if (docking) sim.setDocks(docking->docks(sim), options.dockingStrength);
   Box area = bounds(container);
   Vec2 margin{0.1 * kCanonicalSide, 0.1 * kCanonicalSide};
   area.add(area.min - margin);
@@ -337,6 +366,12 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Library&
   });
   Packing packing = collectPacking(sim, types, frame, scene.container);
   packing.stopReason = reason;
+  if (docking) {
+    for (const SalientCorner& c : docking->match().corners) packing.salientCorners.push_back(frame.toInput(c.position));
+    packing.dockedElements = docking->dockedCount();
+    packing.shapeMatchingSeconds = matchingSeconds;
+  }
+  packing.tile = isTiled(options.tile) ? options.tile : Vec2{};
   packing.fixedArt = fixedArt;
   packing.passes.push_back({static_cast<int>(sim.meshes().size()), sim.iteration(), reason, secondsSince(passStart),
                             packing.skinFill, artFill(packing)});
@@ -396,11 +431,13 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Library&
     secondPass.stopReason =
         simulateUntilStopped(second, secondOptions, options.secondaryTargetFill, primaryIterations, callbacks, collect);
     secondPass.iterations = second.iteration();
-    std::vector<PackingPass> passes = std::move(packing.passes);
-    packing = collect();
+    Packing result = collect();
+    packing.elements = std::move(result.elements);
+    packing.iterations = result.iterations;
+    packing.skinFill = result.skinFill;
+    packing.vertexCount = result.vertexCount;
+    packing.springCount = result.springCount;
     packing.stopReason = secondPass.stopReason;
-    packing.fixedArt = fixedArt;
-    packing.passes = std::move(passes);
     secondPass.skinFill = packing.skinFill;
     secondPass.artFill = artFill(packing);
   }
