@@ -3,6 +3,7 @@
 #include <cmath>
 #include <string>
 
+#include "containers.hpp"
 #include "packing_simulation.hpp"
 #include "pak/clipping.hpp"
 #include "pak/error.hpp"
@@ -55,6 +56,12 @@ void checkOptions(const RepulsionOptions& o) {
   if (o.meshSpacing < 0.0 || o.count < 0 || o.maxIterations < 0 || o.stallWindow < 1 || o.cellSize < 0.0)
     throw InputError("", "mesh spacing, count, cell size, max iterations and stall window must not be negative");
   if (o.count > 100000) throw InputError("", "count " + std::to_string(o.count) + " is absurdly large");
+  if (o.orientationField.axis != 'x' && o.orientationField.axis != 'y')
+    throw InputError("", "orientation field axis must be x or y");
+  if (!std::isfinite(o.orientationField.fromDegrees) || !std::isfinite(o.orientationField.toDegrees))
+    throw InputError("", "orientation field angles must be finite");
+  if (!(o.orientationTorsion >= 0.0) || !std::isfinite(o.orientationTorsion))
+    throw InputError("", "orientation torsion must be a non-negative number");
   for (double k : {o.repulsionStrength, o.overlapStrength, o.boundaryStrength, o.edgeStrength,
                    o.negativeSpaceStrength, o.torsionStrength, o.soft, o.growthRate, o.stallEpsilon})
     if (!(k >= 0.0) || !std::isfinite(k)) throw InputError("", "force strengths and rates must be non-negative numbers");
@@ -111,7 +118,7 @@ std::vector<PreparedElement> prepareLibrary(const Library& library, double nomin
 
 // Skins of the seeded meshes at growth g: overlap-free and inside the container?
 bool seedingIsClear(const std::vector<PreparedElement>& types, const std::vector<Seed>& seeds, double g,
-                    const RegionIndex& container) {
+                    const std::vector<const RegionIndex*>& containers) {
   std::vector<Region> skins;
   std::vector<Box> boxes;
   for (const Seed& s : seeds) {
@@ -119,7 +126,7 @@ bool seedingIsClear(const std::vector<PreparedElement>& types, const std::vector
     Ring ring;
     for (int k = 0; k < mesh.boundaryCount; ++k) {
       Vec2 p = s.position + rotated(mesh.mesh.vertices[k] - mesh.restCentroid, s.angle) * g;
-      if (!container.query(p, false).inside) return false;
+      if (!containers[s.container]->query(p, false).inside) return false;
       ring.push_back(p);
     }
     boxes.push_back(bounds(ring));
@@ -149,6 +156,7 @@ Packing collectPacking(const PackingSimulation& sim, const std::vector<PreparedE
     placed.libraryIndex = mesh.type;
     placed.source = type.source;
     placed.growth = mesh.growth;
+    placed.container = mesh.container;
     placed.art = type.art;
     std::size_t k = 0;
     for (Shape& shape : placed.art) {
@@ -186,20 +194,66 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Repulsio
   const double spacing = options.meshSpacing > 0.0 ? options.meshSpacing
                                                    : std::max(options.gap, std::sqrt(nominalSkinArea) / 10.0);
   RegionIndex containerIndex(container, std::max(spacing, 5.0));
-  std::vector<PreparedElement> types = prepareLibrary(library, nominalSkinArea, spacing, options);
 
-  SeedingOptions seeding;
-  seeding.count = count;
-  seeding.types = static_cast<int>(types.size());
-  seeding.seed = options.seed;
-  std::vector<Seed> seeds = seedElements(container, containerIndex, seeding);
+  // Separate containers (several regions, a previous packing's elements), each with its own
+  // library or the run's; their libraries together are the element types.
+  std::vector<Region> partsInput;
+  std::vector<const Library*> partLibraries;
+  if (scene.containers.empty()) {
+    for (const Polygon& polygon : scene.container) partsInput.push_back(Region{polygon});
+  } else {
+    for (const ContainerPart& part : scene.containers) {
+      partsInput.push_back(part.region);
+      partLibraries.push_back(part.library.empty() ? &library : &part.library);
+    }
+  }
+  partLibraries.resize(partsInput.size(), &library);
+  std::vector<const Library*> libraries;  // distinct, in order of first use
+  for (const Library* l : partLibraries)
+    if (std::find(libraries.begin(), libraries.end(), l) == libraries.end()) libraries.push_back(l);
+  Library combined;
+  if (libraries.size() != 1 || libraries.front() != &library)
+    for (const Library* l : libraries) combined.insert(combined.end(), l->begin(), l->end());
+  std::vector<PreparedElement> types =
+      prepareLibrary(combined.empty() ? library : combined, nominalSkinArea, spacing, options);
+
+  std::vector<Region> parts;
+  std::vector<RegionIndex> partIndexes;
+  partIndexes.reserve(partsInput.size());
+  std::vector<const RegionIndex*> partIndex;
+  std::vector<ContainerSeeding> partSeeding(partsInput.size());
+  std::vector<double> partAreas;
+  for (const Region& input : partsInput) {
+    parts.push_back(transformed(input, frame.scale, -box.min * frame.scale));
+    normalizeOrientation(parts.back());
+    partAreas.push_back(area(parts.back()));
+  }
+  const std::vector<int> partCounts = seedsPerContainer(partAreas, count, 0.5 * nominalSkinArea);
+  for (std::size_t c = 0; c < parts.size(); ++c) {
+    if (parts.size() > 1) partIndexes.emplace_back(parts[c], std::max(spacing, 5.0));
+    partIndex.push_back(parts.size() > 1 ? &partIndexes.back() : &containerIndex);
+    int first = 0;
+    for (const Library* l : libraries) {
+      if (l == partLibraries[c]) break;
+      first += static_cast<int>(l->size());
+    }
+    partSeeding[c] = {&parts[c], partIndex[c], partCounts[c], {}};
+    for (std::size_t k = 0; k < partLibraries[c]->size(); ++k) partSeeding[c].types.push_back(first + static_cast<int>(k));
+  }
+  std::vector<Seed> seeds = seedContainers(partSeeding, options.seed);
   if (seeds.empty()) throw InputError(scene.source, "container too small to seed any element");
+  // Preferred orientation: seeded at the angle the torsion will hold (eq. 4.6).
+  const OrientationRamp ramp = options.orientation == OrientationMode::Field
+                                   ? OrientationRamp::over(options.orientationField, bounds(container).min, bounds(container).max)
+                                   : OrientationRamp{};
+  if (options.orientation != OrientationMode::Random)
+    for (Seed& s : seeds) s.angle = ramp.active ? ramp.angleAt(s.position) : 0.0;
 
   // Shrink everything alike until the seeded skins cover `initialCoverage` without overlap.
   double seededSkin = 0.0;
   for (const Seed& s : seeds) seededSkin += types[s.type].mesh.skinArea;
   double g0 = std::sqrt(options.initialCoverage * containerArea / seededSkin);
-  for (int attempt = 0; attempt < 30 && !seedingIsClear(types, seeds, g0, containerIndex); ++attempt) g0 *= 0.9;
+  for (int attempt = 0; attempt < 30 && !seedingIsClear(types, seeds, g0, partIndex); ++attempt) g0 *= 0.9;
 
   SimulationParameters parameters;
   parameters.repulsionStrength = options.repulsionStrength;
@@ -208,6 +262,8 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Repulsio
   parameters.edgeStrength = options.edgeStrength;
   parameters.negativeSpaceStrength = options.negativeSpaceStrength;
   parameters.torsionStrength = options.torsionStrength;
+  if (options.orientation != OrientationMode::Random && options.torsionStrength == 0.0)
+    parameters.torsionStrength = options.orientationTorsion;
   parameters.soft = options.soft;
   parameters.timeStep = options.timeStep;
   parameters.velocityCap = options.velocityCap;
@@ -218,8 +274,20 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Repulsio
 
   ThreadPool pool(options.threads);
   PackingSimulation sim(containerIndex, containerArea, parameters, pool);
-  for (const Seed& s : seeds) sim.addMesh(types[s.type].mesh, s.type, s.position, s.angle, g0);
-  sim.setContainerCorners(PackingSimulation::reflexCorners(container));
+  for (const Seed& s : seeds) sim.meshes()[sim.addMesh(types[s.type].mesh, s.type, s.position, s.angle, g0)].container = s.container;
+  if (parts.size() > 1) {
+    std::vector<PackingSimulation::Corner> corners;
+    for (std::size_t c = 0; c < parts.size(); ++c)
+      for (PackingSimulation::Corner corner : PackingSimulation::reflexCorners(parts[c])) {
+        corner.container = static_cast<int>(c);
+        corners.push_back(corner);
+      }
+    sim.setContainerCorners(std::move(corners));
+    sim.setContainerParts(partIndex);
+  } else {
+    sim.setContainerCorners(PackingSimulation::reflexCorners(container));
+  }
+  if (ramp.active) sim.setOrientationField(ramp);
   Box area = bounds(container);
   Vec2 margin{0.1 * kCanonicalSide, 0.1 * kCanonicalSide};
   area.add(area.min - margin);
@@ -261,6 +329,7 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Repulsio
   report();
   Packing packing = collectPacking(sim, types, frame, scene.container);
   packing.stopReason = reason;
+  packing.containers = partsInput;
   return packing;
 }
 
