@@ -150,6 +150,7 @@ Scene sceneFromDocument(const SvgDocument& document, const SceneOptions& sceneOp
     const Shape& shape = document.shapes[i];
     if (elementContainers && shape.layer == containerLayer) {
       scene.containerShapes.push_back(shape);
+      scene.containerShapes.back().layer = "container";  // drawn as the artist drew it, under the new elements
       elementShapes.push_back(&shape);
       elementKeys.push_back(shape.layerGroup);
     } else if (shape.layer == "fixed") {
