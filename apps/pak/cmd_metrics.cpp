@@ -17,6 +17,7 @@
 #include "pak/atomic_file.hpp"
 #include "pak/clipping.hpp"
 #include "pak/error.hpp"
+#include "pak/distance_map_image.hpp"
 #include "pak/metrics.hpp"
 #include "pak/metrics_plot.hpp"
 #include "pak/offset_visualization.hpp"
@@ -37,6 +38,7 @@ struct MetricsArgs {
   std::string csv, json, plot;
   std::optional<double> visualize;
   std::string visualizeOut;
+  std::string distanceMap;
 };
 
 std::string extensionOf(const std::string& path) {
@@ -184,6 +186,8 @@ int runMetrics(MetricsArgs args) {
     throw InputError("", "--visualize must be a non-negative offset");
   if (!args.visualizeOut.empty() && extensionOf(args.visualizeOut) != ".png")
     throw InputError(args.visualizeOut, "--visualize-out must be a .png file");
+  if (!args.distanceMap.empty() && extensionOf(args.distanceMap) != ".png")
+    throw InputError(args.distanceMap, "--distance-map must be a .png file");
 
   if (args.gap) args.metrics.gap = *args.gap;
   else if (!args.report.empty()) args.metrics.gap = gapFromReport(args.report);
@@ -217,6 +221,10 @@ int runMetrics(MetricsArgs args) {
   if (args.visualize)
     for (std::size_t i = 0; i < packings.size(); ++i)
       writeOffsetVisualization(packings[i], *args.visualize, visualizationPath(args.visualizeOut, i, packings.size()));
+  if (!args.distanceMap.empty())
+    for (std::size_t i = 0; i < packings.size(); ++i)
+      writeDistanceMapImage(packings[i], visualizationPath(args.distanceMap, i, packings.size()),
+                            args.metrics.gridResolution);
 
   std::cout << tableText(measured, offsets, args.calibrate) << std::flush;
   return 0;
@@ -245,6 +253,10 @@ const CommandRegistrar registrar{Command{
           ->type_name("N");
       cmd->add_option("--bins", args->metrics.histogramBins, "bins of the discrete distance histogram (default: 50)")
           ->type_name("N");
+      cmd->add_option("--arc-tolerance", args->metrics.arcTolerance,
+                      "largest error of the polygon offsets and of the outline simplification before them, "
+                      "in the file's units (default 0: 1e-4 of the container's bounding square)")
+          ->type_name("D");
       cmd->add_flag("--calibrate", args->calibrate,
                     "offset every packing's elements uniformly to the packings' mean negative-space ratio first "
                     "(thesis 6.4), and report the offset");
@@ -262,6 +274,10 @@ const CommandRegistrar registrar{Command{
           ->type_name("R");
       cmd->add_option("--visualize-out", args->visualizeOut,
                       "PNG for --visualize (numbered -1, -2 … for several packings)")
+          ->type_name("FILE.png");
+      cmd->add_option("--distance-map", args->distanceMap,
+                      "draw the distance transform of the negative space, one pixel per grid cell, light = far "
+                      "from any element (thesis Fig. 6.3b; numbered -1, -2 … for several packings)")
           ->type_name("FILE.png");
       return [args] { return runMetrics(*args); };
     }}};

@@ -63,6 +63,18 @@ double estimateGap(const PackingGeometry& packing);
 
 PackingMetrics measurePacking(const PackingGeometry& packing, const MetricsOptions& options = {});
 
+// The discrete distance transform of thesis 6.3.2 (Figure 6.3b): `resolution` cells along the
+// container's bounding square, row-major from `origin`, each free cell holding the distance
+// from its centre to the nearest element or container boundary, every other cell -1.
+struct DistanceMap {
+  Vec2 origin;
+  double cell = 0.0;
+  int columns = 0, rows = 0;
+  std::vector<double> distance;
+  double largest = 0.0;   // over the free cells
+};
+DistanceMap distanceMap(const PackingGeometry& packing, int resolution = 1000);
+
 // Thesis 6.4: offsets every element outline uniformly (by bisection on the offset) until the
 // negative-space ratio equals `targetNegativeRatio` within `tolerance`.
 struct Calibration {

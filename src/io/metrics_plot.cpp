@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "cairo_output.hpp"
 #include "pak/atomic_file.hpp"
@@ -25,6 +26,16 @@ constexpr std::array<std::array<double, 3>, 8> kColours = {{{0.12, 0.47, 0.71},
                                                             {0.55, 0.34, 0.29},
                                                             {0.89, 0.47, 0.76},
                                                             {0.50, 0.50, 0.50}}};
+// Packing i: colour i mod 8, and past the first eight a line pattern (solid, dashed, dotted,
+// dash-dot) by i / 8, so up to 32 packings stay distinguishable.
+void setSeriesStyle(cairo_t* cr, std::size_t i) {
+  const auto& colour = kColours[i % kColours.size()];
+  cairo_set_source_rgb(cr, colour[0], colour[1], colour[2]);
+  static const std::vector<double> patterns[] = {{}, {9.0, 4.0}, {2.0, 3.0}, {9.0, 3.0, 2.0, 3.0}};
+  const std::vector<double>& dashes = patterns[(i / kColours.size()) % 4];
+  cairo_set_dash(cr, dashes.data(), static_cast<int>(dashes.size()), 0);
+}
+
 constexpr double kLeft = 62, kRight = 16, kTop = 32, kBottom = 46, kLegendLine = 20;
 
 // About five round ticks (1, 2 or 5 × 10^k) covering [0, top].
@@ -103,8 +114,7 @@ void drawPanel(cairo_t* cr, const std::vector<PackingMetrics>& packings, const P
   cairo_rectangle(cr, px, py, pw, ph);
   cairo_clip(cr);
   for (std::size_t i = 0; i < packings.size(); ++i) {
-    const auto& colour = kColours[i % kColours.size()];
-    cairo_set_source_rgb(cr, colour[0], colour[1], colour[2]);
+    setSeriesStyle(cr, i);
     const Curve& curve = panel.curve(packings[i]);
     bool started = false;
     for (std::size_t k = 0; k < curve.r.size() && k < curve.value.size(); ++k) {
@@ -115,6 +125,7 @@ void drawPanel(cairo_t* cr, const std::vector<PackingMetrics>& packings, const P
     }
     cairo_set_line_width(cr, 1.8);
     cairo_stroke(cr);
+    cairo_set_dash(cr, nullptr, 0, 0);
     // d_gap/2, the radius at which a perfect packing's Q reaches zero and O starts.
     const double dashes[] = {5.0, 4.0};
     cairo_set_dash(cr, dashes, 2, 0);
@@ -138,13 +149,13 @@ void drawFigure(cairo_t* cr, const std::vector<PackingMetrics>& packings, const 
     drawPanel(cr, packings, panels[p], p * options.panelWidth, options.panelWidth, options.panelHeight);
   cairo_set_font_size(cr, 12);
   for (std::size_t i = 0; i < packings.size(); ++i) {
-    const auto& colour = kColours[i % kColours.size()];
     double y = options.panelHeight + kLegendLine * (i + 0.5);
-    cairo_set_source_rgb(cr, colour[0], colour[1], colour[2]);
+    setSeriesStyle(cr, i);
     cairo_set_line_width(cr, 2.5);
     cairo_move_to(cr, kLeft, y);
     cairo_line_to(cr, kLeft + 28, y);
     cairo_stroke(cr);
+    cairo_set_dash(cr, nullptr, 0, 0);
     cairo_set_source_rgb(cr, 0, 0, 0);
     std::string text = std::filesystem::path(packings[i].source).filename().string() + "  (dashed: d_gap/2 = " +
                        label(packings[i].gap / 2) + (packings[i].gapEstimated ? ", estimated)" : ")");

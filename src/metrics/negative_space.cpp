@@ -5,6 +5,7 @@
 
 #include "metrics_internal.hpp"
 #include "pak/error.hpp"
+#include "pak/simplify.hpp"
 
 namespace pak::metrics_internal {
 
@@ -39,10 +40,13 @@ Region negativeSpace(const PackingGeometry& packing, const Frame& frame) {
   return subtract(packing.container, unite(packing.elements, frame.clip), frame.clip);
 }
 
-Region unionOperand(std::vector<Region>&& parts, const Frame& frame) {
-  for (const Region& part : parts)
-    for (const Polygon& p : part)
-      if (!p.holes.empty()) return unite(parts, frame.clip);
+PackingGeometry simplifiedForOffsets(const PackingGeometry& packing, const Frame& frame) {
+  PackingGeometry simplified = packing;
+  for (Region& e : simplified.elements) e = simplifyRegion(e, frame.offset.arcTolerance);
+  return simplified;
+}
+
+Region unionOperand(std::vector<Region>&& parts, const Frame&) {
   Region all;
   for (Region& part : parts)
     for (Polygon& p : part) all.push_back(std::move(p));

@@ -123,7 +123,8 @@ Curve overlapCurve(const PackingGeometry& packing, const std::vector<ElementPair
 double overlapFunction(const PackingGeometry& packing, double r, double arcTolerance) {
   using namespace metrics_internal;
   const Frame frame = makeFrame(packing, arcTolerance);
-  return overlapRatio(packing, nearPairs(packing, r, false), r, frame);
+  const PackingGeometry simplified = simplifiedForOffsets(packing, frame);
+  return overlapRatio(simplified, nearPairs(simplified, r, false), r, frame);
 }
 
 }  // namespace pak

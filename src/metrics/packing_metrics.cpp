@@ -38,11 +38,12 @@ std::vector<double> negativeDerivative(const Curve& q) {
 
 }  // namespace
 
-PackingMetrics measurePacking(const PackingGeometry& packing, const MetricsOptions& options) {
+PackingMetrics measurePacking(const PackingGeometry& original, const MetricsOptions& options) {
   using namespace metrics_internal;
-  checkOptions(packing, options);
-  const Frame frame = makeFrame(packing, options.arcTolerance);
-  const Region negative = negativeSpace(packing, frame);
+  checkOptions(original, options);
+  const Frame frame = makeFrame(original, options.arcTolerance);
+  const Region negative = negativeSpace(original, frame);
+  const PackingGeometry packing = simplifiedForOffsets(original, frame);
 
   PackingMetrics m;
   m.source = packing.source;

@@ -80,24 +80,63 @@ Curve contactCurve(const PackingGeometry& packing, const Region& negative, const
   q.r.resize(count);
   q.value.resize(count);
   for (int k = 0; k < count; ++k) q.r[k] = count > 1 ? largest * k / (count - 1) : 0.0;
-  parallelFor(count, [&](int k) { q.value[k] = erodedRatio(packing, negative, q.r[k], frame); });
+  // N(r) shrinks as r grows, so N(r_k) = N(r_j) ∩ erode(C, r_k) \ U grow(E_i, r_k) for any
+  // r_j < r_k, where only elements whose grown box meets a piece of N(r_j) take part: at
+  // large r few pockets remain and few elements are offset. The radii are split into a fixed
+  // number of interleaved chains (not one per thread), so the result is the same on any
+  // number of cores.
+  constexpr int kChains = 4;
+  parallelFor(std::min(kChains, count), [&](int chain) {
+    Region previous;
+    bool havePrevious = false;
+    for (int k = chain; k < count; k += kChains) {
+      const double r = q.r[k];
+      if (r <= 0.0 || (havePrevious && previous.empty())) {
+        q.value[k] = r <= 0.0 ? area(negative) / frame.containerArea : 0.0;
+        if (r <= 0.0) { previous = negative; havePrevious = true; }
+        continue;
+      }
+      Region current;
+      if (!havePrevious) {
+        current = erodedRegion(packing, r, frame, nullptr);
+      } else {
+        std::vector<Box> pieces;
+        for (const Polygon& p : previous) pieces.push_back(bounds(p.outer));
+        std::vector<Region> grown;
+        for (const Region& e : packing.elements) {
+          Box b = bounds(e);
+          b.min = b.min - Vec2{r, r};
+          b.max = b.max + Vec2{r, r};
+          if (std::any_of(pieces.begin(), pieces.end(), [&](const Box& piece) { return piece.overlaps(b); }))
+            grown.push_back(offset(e, r, frame.offset));
+        }
+        Region inner = intersect(offset(packing.container, -r, frame.offset), previous, frame.clip);
+        current = grown.empty() ? std::move(inner)
+                                : subtract(inner, unionOperand(std::move(grown), frame), frame.clip);
+      }
+      q.value[k] = area(current) / frame.containerArea;
+      previous = std::move(current);
+      havePrevious = true;
+    }
+  });
   return q;
 }
 
 }  // namespace metrics_internal
 
 double sphericalContact(const PackingGeometry& packing, double r, double arcTolerance) {
-  const metrics_internal::Frame frame = metrics_internal::makeFrame(packing, arcTolerance);
-  return metrics_internal::erodedRatio(packing, metrics_internal::negativeSpace(packing, frame), r,
-                                       frame);
+  using namespace metrics_internal;
+  const Frame frame = makeFrame(packing, arcTolerance);
+  return erodedRatio(simplifiedForOffsets(packing, frame), negativeSpace(packing, frame), r, frame);
 }
 
 double estimateGap(const PackingGeometry& packing) {
   using namespace metrics_internal;
   const Frame frame = makeFrame(packing, 0.0);
   const Region negative = negativeSpace(packing, frame);
-  const double largest = largestEmptyRadius(packing, negative, frame);
-  return gapFromCurve(contactCurve(packing, negative, frame, largest, MetricsOptions{}.radii));
+  const PackingGeometry simplified = simplifiedForOffsets(packing, frame);
+  const double largest = largestEmptyRadius(simplified, negative, frame);
+  return gapFromCurve(contactCurve(simplified, negative, frame, largest, MetricsOptions{}.radii));
 }
 
 }  // namespace pak

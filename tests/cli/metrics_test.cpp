@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cli/png_pixels.hpp"
 #include "cli/run_pak.hpp"
 
 using namespace pak::testing;
@@ -70,6 +71,30 @@ TEST_F(CliMetrics, CalibrateSvgPlotAndVisualization) {
   EXPECT_NE(readWholeFile(file("plot.svg")).find("<svg"), std::string::npos);
   EXPECT_EQ(readWholeFile(file("offset-1.png")).rfind("\x89PNG", 0), 0u);
   EXPECT_EQ(readWholeFile(file("offset-2.png")).rfind("\x89PNG", 0), 0u);
+}
+
+TEST_F(CliMetrics, DistanceMapShadesFreeSpaceByDistance) {
+  // A 100 × 100 square container with one 40 × 40 square element in the middle.
+  const std::string path = folder_->write(
+      "one.svg",
+      "<svg xmlns='http://www.w3.org/2000/svg' viewBox='0 0 100 100'><g id='container'><rect width='100' "
+      "height='100'/></g><g id='elements'><g><rect x='30' y='30' width='40' height='40' fill='red'/></g></g></svg>");
+  PakRun run = runPak("metrics " + shellQuoted(path) + kFast + " --gap 10 --distance-map " + shellQuoted(file("dm.png")));
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  const PngPixels image = readPngPixels(file("dm.png"));
+  ASSERT_EQ(image.width, 200);
+  ASSERT_EQ(image.height, 200);
+  auto brightness = [&](int x, int y) { const Rgba p = image.at(x, y); return p.r + p.g + p.b; };
+  const Rgba element = image.at(100, 100);
+  EXPECT_EQ(element.r, element.g);  // grey
+  EXPECT_EQ(element.g, element.b);
+  // Free space gets lighter away from the walls and the element: the point midway between the
+  // element and the wall (distance 15) is lighter than one next to the element (distance ~1).
+  EXPECT_GT(brightness(30, 100), brightness(57, 100));
+  EXPECT_GT(brightness(30, 100), brightness(2, 100));
+  PakRun bad = runPak("metrics " + shellQuoted(path) + kFast + " --distance-map " + shellQuoted(file("dm.jpg")));
+  EXPECT_EQ(bad.exitCode, 2);
+  EXPECT_EQ(bad.errLines().size(), 1u) << bad.err;
 }
 
 TEST_F(CliMetrics, BadPackingsFailWithOneErrorLine) {
