@@ -6,9 +6,20 @@
 
 #include "pak/polygon.hpp"
 #include "pak/region_index.hpp"
+#include "pak/scene.hpp"
 #include "seeding.hpp"
 
 namespace pak {
+
+// The scene's separate containers and the element types each is filled with.
+struct SceneContainers {
+  std::vector<Region> regions;  // input coordinates: Scene::containers, else each polygon
+  // Every library in use (the containers' own, the run's), in order of first use; empty when
+  // that is just the run's library, which is then the element types as it is.
+  Library combined;
+  std::vector<std::vector<int>> typesOf;  // per container: its element types
+};
+SceneContainers sceneContainers(const Scene& scene, const Library& library);
 
 // Seeds per container, proportional to area (largest remainders), summing to `count`; a
 // container of at least `minimumArea` gets one even when its share rounds to 0 (so the total

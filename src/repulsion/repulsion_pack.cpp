@@ -197,48 +197,26 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Repulsio
 
   // Separate containers (several regions, a previous packing's elements), each with its own
   // library or the run's; their libraries together are the element types.
-  std::vector<Region> partsInput;
-  std::vector<const Library*> partLibraries;
-  if (scene.containers.empty()) {
-    for (const Polygon& polygon : scene.container) partsInput.push_back(Region{polygon});
-  } else {
-    for (const ContainerPart& part : scene.containers) {
-      partsInput.push_back(part.region);
-      partLibraries.push_back(part.library.empty() ? &library : &part.library);
-    }
-  }
-  partLibraries.resize(partsInput.size(), &library);
-  std::vector<const Library*> libraries;  // distinct, in order of first use
-  for (const Library* l : partLibraries)
-    if (std::find(libraries.begin(), libraries.end(), l) == libraries.end()) libraries.push_back(l);
-  Library combined;
-  if (libraries.size() != 1 || libraries.front() != &library)
-    for (const Library* l : libraries) combined.insert(combined.end(), l->begin(), l->end());
-  std::vector<PreparedElement> types =
-      prepareLibrary(combined.empty() ? library : combined, nominalSkinArea, spacing, options);
-
+  const SceneContainers containers = sceneContainers(scene, library);
+  const std::vector<Region>& partsInput = containers.regions;
+  std::vector<PreparedElement> types = prepareLibrary(containers.combined.empty() ? library : containers.combined,
+                                                      nominalSkinArea, spacing, options);
   std::vector<Region> parts;
-  std::vector<RegionIndex> partIndexes;
-  partIndexes.reserve(partsInput.size());
-  std::vector<const RegionIndex*> partIndex;
-  std::vector<ContainerSeeding> partSeeding(partsInput.size());
   std::vector<double> partAreas;
   for (const Region& input : partsInput) {
     parts.push_back(transformed(input, frame.scale, -box.min * frame.scale));
     normalizeOrientation(parts.back());
     partAreas.push_back(area(parts.back()));
   }
+  std::vector<RegionIndex> partIndexes;  // one per container when there are several
+  partIndexes.reserve(parts.size());
+  std::vector<const RegionIndex*> partIndex;
+  std::vector<ContainerSeeding> partSeeding;
   const std::vector<int> partCounts = seedsPerContainer(partAreas, count, 0.5 * nominalSkinArea);
   for (std::size_t c = 0; c < parts.size(); ++c) {
     if (parts.size() > 1) partIndexes.emplace_back(parts[c], std::max(spacing, 5.0));
     partIndex.push_back(parts.size() > 1 ? &partIndexes.back() : &containerIndex);
-    int first = 0;
-    for (const Library* l : libraries) {
-      if (l == partLibraries[c]) break;
-      first += static_cast<int>(l->size());
-    }
-    partSeeding[c] = {&parts[c], partIndex[c], partCounts[c], {}};
-    for (std::size_t k = 0; k < partLibraries[c]->size(); ++k) partSeeding[c].types.push_back(first + static_cast<int>(k));
+    partSeeding.push_back({&parts[c], partIndex[c], partCounts[c], containers.typesOf[c]});
   }
   std::vector<Seed> seeds = seedContainers(partSeeding, options.seed);
   if (seeds.empty()) throw InputError(scene.source, "container too small to seed any element");

@@ -179,3 +179,19 @@ TEST(Containers, BadContainerLayerAndLibraryAreInputErrors) {
     <g id="container"><rect width="100" height="100" data-elements="  ,  "/></g></svg>)";
   EXPECT_THROW(sceneFromDocument(readSvgString(missing, "m.svg"), SceneOptions{}), InputError);
 }
+
+TEST(Containers, SeveralContainersWithAFieldAreDeterministicWhateverTheThreadCount) {
+  Scene scene = loadScene(kExamples + "/rooms.svg", SceneOptions{});
+  Library run = loadLibrary({kExamples + "/elements/cat.svg"});
+  RepulsionOptions options = quick(9);
+  options.maxIterations = 150;
+  options.orientation = OrientationMode::Field;
+  options.orientationField = {'y', -30.0, 60.0};
+  std::string reference;
+  for (int threads : {1, 2, 3}) {
+    options.threads = threads;
+    std::string svg = toSvgString(packingDrawing(scene, packRepulsion(scene, run, options)));
+    if (reference.empty()) reference = svg;
+    EXPECT_EQ(svg, reference) << "threads = " << threads;
+  }
+}
