@@ -40,8 +40,9 @@ void expectEachInItsOwnContainer(const Packing& packing) {
     ASSERT_LT(own, static_cast<int>(packing.containers.size()));
     EXPECT_LE(outsideArea(outlines[i], packing.containers[own]), tolerance) << "element " << i;
     for (std::size_t c = 0; c < packing.containers.size(); ++c)
-      if (static_cast<int>(c) != own)
+      if (static_cast<int>(c) != own) {
         EXPECT_LE(area(intersect(outlines[i], packing.containers[c])), tolerance) << "element " << i << " in " << c;
+      }
   }
   PackingCheckOptions options;
   options.areaTolerance = tolerance;
@@ -121,9 +122,14 @@ TEST(Containers, ElementsStayInTheirContainerOutOfHolesWithTheirOwnLibrary) {
   for (const PlacedElement& e : packing.elements) {
     ++perContainer[e.container];
     const std::string name = fileName(e.source);
-    if (e.container == left) EXPECT_EQ(name, "star.svg");
-    if (e.container == right) EXPECT_TRUE(name == "cat.svg" || name == "mushroom.svg") << name;
-    if (e.container == ring) EXPECT_TRUE(name == "leaf.svg" || name == "moon.svg") << name;
+    if (e.container == left) {
+      EXPECT_EQ(name, "star.svg");
+    } else if (e.container == right) {
+      EXPECT_TRUE(name == "cat.svg" || name == "mushroom.svg") << name;
+    } else {
+      EXPECT_EQ(e.container, ring);
+      EXPECT_TRUE(name == "leaf.svg" || name == "moon.svg") << name;
+    }
   }
   for (const Region& art : artOutlines(packing)) EXPECT_LE(area(intersect(art, hole)), 1e-6 * area(packing.container));
   // 13 seeds by area: the squares are 122,500 each and the ring π(180² − 80²) ≈ 81,681, so
