@@ -5,18 +5,22 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <thread>
 
 #include "command.hpp"
 #include "pak/atomic_file.hpp"
+#include "pak/closest_point.hpp"
 #include "pak/error.hpp"
 #include "pak/packing_drawing.hpp"
 #include "pak/png_renderer.hpp"
 #include "pak/repulsion.hpp"
 #include "pak/scene_loader.hpp"
+#include "pak/shape_matching.hpp"
 #include "pak/svg_writer.hpp"
 #include "pak/text_file.hpp"
+#include "pak/tiling.hpp"
 #include "pak/verify.hpp"
 
 namespace pak::cli {
@@ -54,6 +58,7 @@ const NumberOption kNumberOptions[] = {
     {"growth-rate", &RepulsionOptions::growthRate, "k_g: growth factor increase per unit time while an element has room"},
     {"cell-size", &RepulsionOptions::cellSize, "neighbour grid cell and repulsion reach, canonical units (0: 2 × mesh spacing)"},
     {"outside-tolerance", &RepulsionOptions::outsideTolerance, "a mesh pushed further than this outside the container stops growing (canonical units; 1e9: never, as in the thesis)"},
+    {"docking-strength", &RepulsionOptions::dockingStrength, "with --shape-matching: spring strength holding each matched element's tip on its corner"},
     {"stall-epsilon", &RepulsionOptions::stallEpsilon, "ε of eq. 4.7: stop when the RMS fill change per iteration falls below it"},
 };
 const IntegerOption kIntegerOptions[] = {
@@ -67,6 +72,8 @@ struct PackArguments {
   std::string container;
   std::vector<std::string> elements;
   std::string output, png, config, report, snapshots;
+  std::string tile, tilePreview;  // --tile W,H; --tile-preview FILE.png
+  int tilePreviewRepeat = 3;
   int pngWidth = 1200;
   int every = 500;
   int progressEvery = 0;
@@ -88,8 +95,8 @@ void applyConfig(PackArguments& args) {
   }
   if (!json.is_object()) throw InputError(args.config, "expected a JSON object of option names to values");
   for (auto& [key, value] : json.items()) {
-    bool isOption = key == "seed" || key == "stall-on-measured-area" || key == "orientation" ||
-                    key == "orientation-field" || key == "container-layer";
+    bool isOption = key == "seed" || key == "stall-on-measured-area" || key == "shape-matching" ||
+                    key == "orientation" || key == "orientation-field" || key == "container-layer";
     for (const auto& o : kNumberOptions) isOption |= key == o.name;
     for (const auto& o : kIntegerOptions) isOption |= key == o.name;
     if (!isOption) throw InputError(args.config, "unknown option \"" + key + "\"");
@@ -113,6 +120,11 @@ void applyConfig(PackArguments& args) {
       args.options.stallOnMeasuredArea = value.get<bool>();
       known = true;
     }
+    if (key == "shape-matching") {
+      if (!value.is_boolean()) throw InputError(args.config, "\"shape-matching\" must be true or false");
+      args.options.shapeMatching = value.get<bool>();
+      known = true;
+    }
     if (key == "orientation" || key == "orientation-field" || key == "container-layer") {
       if (!value.is_string()) throw InputError(args.config, "\"" + key + "\" must be a string");
       (key == "orientation" ? args.orientation : key == "orientation-field" ? args.orientationField : args.containerLayer) =
@@ -126,6 +138,16 @@ void applyConfig(PackArguments& args) {
     }
     if (!known) throw InputError(args.config, "unknown option \"" + key + "\"");
   }
+}
+
+// "W,H" (input units) for --tile.
+Vec2 parseTileSize(const std::string& text) {
+  double w = 0.0, h = 0.0;
+  char extra = 0;
+  if (std::sscanf(text.c_str(), " %lf , %lf %c", &w, &h, &extra) != 2 || !(w > 0.0 && h > 0.0) || !std::isfinite(w) ||
+      !std::isfinite(h))
+    throw InputError("", "--tile expects W,H with two positive numbers, got \"" + text + "\"");
+  return {w, h};
 }
 
 std::string formatSeconds(double s) {
@@ -146,9 +168,15 @@ int runPack(PackArguments& args) {
   args.options.orientation = parseOrientationMode(args.orientation);
   args.options.orientationField = parseOrientationField(args.orientationField);
 
+  if (!args.tile.empty()) args.options.tile = parseTileSize(args.tile);
+  const bool tiled = isTiled(args.options.tile);
+  if (tiled && !args.container.empty()) throw InputError(args.container, "--tile packs its own rectangle; give no --container");
+  if (!tiled && args.container.empty()) throw InputError("", "--container is required (or --tile W,H)");
+  if (!args.tilePreview.empty() && !tiled) throw InputError(args.tilePreview, "--tile-preview needs --tile W,H");
+  if (args.tilePreviewRepeat < 1 || args.tilePreviewRepeat > 16) throw InputError("", "--tile-preview-repeat must be 1 to 16");
   SceneOptions sceneOptions;
   sceneOptions.containerLayer = args.containerLayer;
-  Scene scene = loadScene(args.container, sceneOptions);
+  Scene scene = tiled ? tileScene(args.options.tile) : loadScene(args.container, sceneOptions);
   Library library = loadLibrary(args.elements);
   for (const Warning& w : scene.warnings)
     if (!args.quiet) std::fprintf(stderr, "pak: warning: %s: %s\n", w.where.c_str(), w.message.c_str());
@@ -191,9 +219,17 @@ int runPack(PackArguments& args) {
     png.width = args.pngWidth;
     writePngFile(drawing, args.png, png);
   }
+  if (!args.tilePreview.empty()) {
+    PngOptions png;
+    png.width = args.pngWidth;
+    int n = args.tilePreviewRepeat;
+    writePngFile(tileRepetition(drawing, args.options.tile, n, n), args.tilePreview, png);
+  }
 
   // Invariants of the result, on the art as drawn.
   std::vector<Region> outlines = artOutlines(packing);
+  // A tile is checked on the torus: every clone's piece inside the tile, seams included.
+  if (tiled) outlines = periodicRepetition(outlines, packing.tile, 1, 1);
   double containerArea = area(packing.container);
   PackingCheckOptions checkOptions;
   checkOptions.areaTolerance = 1e-6 * containerArea;
@@ -220,11 +256,13 @@ int runPack(PackArguments& args) {
     parameters["orientation"] = toString(args.options.orientation);
     parameters["orientation-field"] = args.orientationField;
     parameters["container-layer"] = args.containerLayer;
+    parameters["shape-matching"] = args.options.shapeMatching;
     parameters["threads-used"] = args.options.threads > 0 ? args.options.threads
                                                           : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     report["parameters"] = parameters;
     report["units"] = "distances in canonical units: the container's bounding square is 1000 wide";
     report["container"] = args.container;
+    if (tiled) report["tile"] = {args.options.tile.x, args.options.tile.y};
     report["elements-library"] = args.elements;
     report["seed"] = args.seed;
     report["iterations"] = packing.iterations;
@@ -246,6 +284,24 @@ int runPack(PackArguments& args) {
     for (const PlacedElement& e : packing.elements)
       if (e.container >= 0 && e.container < static_cast<int>(perContainer.size())) ++perContainer[e.container];
     report["elements-per-container"] = perContainer;
+    // Thesis 4.7's salient convex corners and how close the art comes to each (canonical
+    // units), with or without shape matching, so runs can be compared.
+    nlohmann::json corners = nlohmann::json::array();
+    double cornerSum = 0.0;
+    for (const SalientCorner& c : salientContainerCorners(packing.container)) {
+      double nearest = std::numeric_limits<double>::infinity();
+      for (const Region& r : outlines) nearest = std::min(nearest, closestPointOnBoundary(c.position, r).distance);
+      nearest *= packing.canonicalScale;
+      cornerSum += nearest;
+      corners.push_back({{"x", c.position.x}, {"y", c.position.y}, {"art-distance", nearest}});
+    }
+    report["salient-corners"] = corners;
+    report["corner-art-distance-mean"] = corners.empty() ? 0.0 : cornerSum / static_cast<double>(corners.size());
+    if (args.options.shapeMatching) {
+      report["shape-matching"] = {{"corners", packing.salientCorners.size()},
+                                  {"docked-elements", packing.dockedElements},
+                                  {"matching-seconds", packing.shapeMatchingSeconds}};
+    }
     writeFileAtomically(args.report, report.dump(2) + "\n");
   }
   return 0;
@@ -259,7 +315,12 @@ const CommandRegistrar registrar{{"pack", [](CLI::App& app) {
       "Elements are meshed, seeded small, then repel, grow and deform until the container is full.\n"
       "Example: pak pack --container heart.svg --elements animals/ -o out.svg --png out.png");
   args->command = cmd;
-  cmd->add_option("--container,-c", args->container, "scene or container file (.svg or .path)")->required();
+  cmd->add_option("--container,-c", args->container, "scene or container file (.svg or .path); required unless --tile");
+  cmd->add_option("--tile", args->tile,
+                  "pack a tileable W,H rectangle (input units) instead of a container: elements crossing an edge "
+                  "come back on the opposite one (thesis 4.8)");
+  cmd->add_option("--tile-preview", args->tilePreview, "with --tile: also render an N x N repetition of the tile to this PNG");
+  cmd->add_option("--tile-preview-repeat", args->tilePreviewRepeat, "N for --tile-preview")->capture_default_str();
   cmd->add_option("--elements,-e", args->elements, "element files and/or folders of .svg/.path files")->required();
   cmd->add_option("-o,--output", args->output, "output SVG")->required();
   cmd->add_option("--png", args->png, "also render a PNG preview to this file");
@@ -289,6 +350,8 @@ const CommandRegistrar registrar{{"pack", [](CLI::App& app) {
       ->capture_default_str();
   cmd->add_flag("--stall-on-measured-area", args->options.stallOnMeasuredArea,
                 "apply eq. 4.7 to the measured skin area, as the thesis does, instead of the meshes' rest area");
+  cmd->add_flag("--shape-matching", args->options.shapeMatching,
+                "place elements that fit the container's sharp convex corners there first and dock them (thesis 4.7)");
   cmd->add_flag("--debug-layers", args->debugLayers, "add the skins and meshes as extra layers");
   cmd->add_flag("--quiet,-q", args->quiet, "no progress output");
   cmd->add_option("--progress-every", args->progressEvery,

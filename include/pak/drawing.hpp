@@ -1,6 +1,7 @@
 #pragma once
 // A drawing to write or render: nested groups of shapes in a coordinate box. The SVG
 // writer and the PNG renderer both take a Drawing, so every output looks the same in both.
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -16,6 +17,7 @@ struct DrawingGroup {
   std::vector<std::pair<std::string, std::string>> attributes;  // e.g. {"data-source", "cat.svg"}
   std::vector<Shape> shapes;
   std::vector<DrawingGroup> children;
+  std::optional<Box> clip = std::nullopt;  // draw only inside this box (an SVG clipPath), e.g. a tile
 };
 
 struct Drawing {

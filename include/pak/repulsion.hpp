@@ -56,6 +56,14 @@ struct RepulsionOptions {
   // moves only by growth; true, the measured skin area as in the thesis (jitters more).
   bool stallOnMeasuredArea = false;
   int maxIterations = 30000;
+  // --- shape matching (4.7): elements whose shape fits are placed at the container's salient
+  // convex corners instead of random seeds and held there by docking springs
+  bool shapeMatching = false;
+  double dockingStrength = 20.0;  // k of the docking spring from a matched tip vertex to its corner
+  // --- tileable packing (thesis 4.8): W × H > 0 packs the periodic rectangle [0, W] × [0, H]
+  // (input units) instead of the scene's container; clones in the 8 neighbouring cells act
+  // on their originals, so the result tiles the plane. See docs/tiling.md.
+  Vec2 tile{};
   // --- run
   std::uint64_t seed = 1;
   int threads = 0;                // 0: all cores; results do not depend on it
@@ -103,6 +111,12 @@ struct Packing {
   double skinFill = 0.0;         // skin area / container area
   int vertexCount = 0;
   int springCount = 0;
+  // Shape matching (empty / 0 when off): the salient corners (input coordinates), how many
+  // elements were docked at them, and the matching stage's time.
+  std::vector<Vec2> salientCorners;
+  int dockedElements = 0;
+  double shapeMatchingSeconds = 0.0;
+  Vec2 tile{};                   // W × H of a tileable packing (input units); 0: not tiled
 };
 
 // Throws InputError for an empty library or container, or bad options.

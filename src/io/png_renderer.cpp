@@ -94,8 +94,14 @@ void drawShape(cairo_t* context, const Shape& shape) {
 }
 
 void drawGroup(cairo_t* context, const DrawingGroup& group) {
+  if (group.clip) {
+    cairo_save(context);
+    cairo_rectangle(context, group.clip->min.x, group.clip->min.y, group.clip->width(), group.clip->height());
+    cairo_clip(context);
+  }
   for (const Shape& shape : group.shapes) drawShape(context, shape);
   for (const DrawingGroup& child : group.children) drawGroup(context, child);
+  if (group.clip) cairo_restore(context);
 }
 
 

@@ -100,8 +100,24 @@ class SvgBuilder {
   explicit SvgBuilder(int precision) : precision_(precision) {}
 
   void writeGroup(const DrawingGroup& group, int depth) {
+    std::string clipId;
+    if (group.clip) {
+      // A rectangle clip path just before the group that uses it.
+      clipId = "pak-clip-" + std::to_string(++clipCount_);
+      const Box& c = *group.clip;
+      indent(depth);
+      out_ += "<clipPath";
+      attribute("id", clipId);
+      out_ += "><rect";
+      attribute("x", formatNumber(c.min.x, precision_));
+      attribute("y", formatNumber(c.min.y, precision_));
+      attribute("width", formatNumber(c.width(), precision_));
+      attribute("height", formatNumber(c.height(), precision_));
+      out_ += "/></clipPath>\n";
+    }
     indent(depth);
     out_ += "<g";
+    if (!clipId.empty()) attribute("clip-path", "url(#" + clipId + ")");
     if (!group.id.empty()) attribute("id", group.id);
     if (!group.cssClass.empty()) attribute("class", group.cssClass);
     if (depth == 1 && !group.id.empty()) {
@@ -158,6 +174,7 @@ class SvgBuilder {
 
  private:
   int precision_;
+  int clipCount_ = 0;
   std::string out_;
 };
 

@@ -61,7 +61,7 @@ std::vector<int> seedsPerContainer(const std::vector<double>& areas, int count, 
   return seeds;
 }
 
-std::vector<Seed> seedContainers(const std::vector<ContainerSeeding>& containers, std::uint64_t seed) {
+std::vector<Seed> seedContainers(const std::vector<ContainerSeeding>& containers, std::uint64_t seed, Vec2 period) {
   std::vector<Seed> seeds;
   for (std::size_t c = 0; c < containers.size(); ++c) {
     const ContainerSeeding& container = containers[c];
@@ -70,6 +70,7 @@ std::vector<Seed> seedContainers(const std::vector<ContainerSeeding>& containers
     options.count = container.count;
     options.types = static_cast<int>(container.types.size());
     options.seed = c == 0 ? seed : Rng(seed + c).next();
+    options.period = period;
     for (Seed s : seedElements(*container.region, *container.index, options)) {
       s.type = container.types[static_cast<std::size_t>(s.type)];
       s.container = static_cast<int>(c);

@@ -35,6 +35,7 @@ struct ContainerSeeding {
 
 // seedElements in each container, types cycled through its own list, Seed::container set.
 // Container 0 uses `seed` itself, so a single container seeds exactly as seedElements does.
-std::vector<Seed> seedContainers(const std::vector<ContainerSeeding>& containers, std::uint64_t seed);
+// `period`: SeedingOptions::period (a tile).
+std::vector<Seed> seedContainers(const std::vector<ContainerSeeding>& containers, std::uint64_t seed, Vec2 period = {});
 
 }  // namespace pak

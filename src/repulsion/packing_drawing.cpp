@@ -2,6 +2,8 @@
 
 #include <filesystem>
 
+#include "pak/tiling.hpp"
+
 namespace pak {
 
 namespace {
@@ -43,6 +45,7 @@ Drawing packingDrawing(const Scene& scene, const Packing& packing, const Packing
     std::string name = std::filesystem::path(e.source).filename().string();
     elements.children.push_back({"", "element", {{"data-source", name}}, e.art, {}});
   }
+  if (isTiled(packing.tile)) addPeriodicClones(elements, packing.tile);  // one seamless tile
   drawing.groups.push_back(std::move(elements));
 
   if (options.debugLayers) {

@@ -104,6 +104,7 @@ void PackingSimulation::finalize(const Box& area) {
     for (int v : triangles_[t]) incidentTriangle_[cursor[v]++] = static_cast<int>(t);
 
   grid_.configure(area, parameters_.cellSize, segmentMesh_.size());
+  if (periodic()) vertexExtent_ = bounds(position_);
   // Areas and normals for the first `fill()` and the first step.
   grid_.rebuild(position_.data(), segmentEnds_.data(), segmentMesh_.size());
   prepareSkins(0, meshes_.size());
@@ -139,8 +140,31 @@ void PackingSimulation::prepareSkins(std::size_t meshBegin, std::size_t meshEnd)
 }
 
 int PackingSimulation::nearestSkinPoints(Vec2 p, int excludeMesh, SkinHit* hits) const {
-  const double cutoff2 = parameters_.cellSize * parameters_.cellSize;
   int count = 0;
+  nearestSkinPointsOf(p, Vec2{}, 0, excludeMesh, hits, count);
+  if (!periodic()) return count;
+  // Thesis 4.8: the clones in the 8 neighbouring cells act like their originals. A clone at
+  // offset o near p is the original near p - o; skip offsets where p - o is out of reach.
+  const double reach = parameters_.cellSize;
+  for (int image = 1; image < 9; ++image) {
+    Vec2 offset = periodicOffset(image), q = p - offset;
+    if (q.x < vertexExtent_.min.x - reach || q.x > vertexExtent_.max.x + reach || q.y < vertexExtent_.min.y - reach ||
+        q.y > vertexExtent_.max.y + reach)
+      continue;
+    nearestSkinPointsOf(q, offset, image, -1, hits, count);  // a mesh's own clones repel it too
+  }
+  return count;
+}
+
+Vec2 PackingSimulation::periodicOffset(int image) const {
+  // Image 0 is the mesh itself; 1…8 the neighbouring cells in a fixed order (determinism).
+  static constexpr int kCell[9][2] = {{0, 0}, {-1, -1}, {0, -1}, {1, -1}, {-1, 0}, {1, 0}, {-1, 1}, {0, 1}, {1, 1}};
+  return {kCell[image][0] * parameters_.period.x, kCell[image][1] * parameters_.period.y};
+}
+
+void PackingSimulation::nearestSkinPointsOf(Vec2 p, Vec2 offset, int image, int excludeMesh, SkinHit* hits,
+                                            int& count) const {
+  const double cutoff2 = parameters_.cellSize * parameters_.cellSize;
   grid_.forEachNear(p, 1, [&](int s) {
     int mesh = segmentMesh_[s];
     if (mesh == excludeMesh) return;
@@ -150,7 +174,7 @@ int PackingSimulation::nearestSkinPoints(Vec2 p, int excludeMesh, SkinHit* hits)
     double d2 = lengthSquared(p - q);
     if (d2 > cutoff2) return;
     int slot = 0;
-    while (slot < count && hits[slot].mesh != mesh) ++slot;
+    while (slot < count && (hits[slot].mesh != mesh || hits[slot].image != image)) ++slot;
     if (slot == count) {
       if (count == kMaxNeighbours) return;
       ++count;
@@ -160,9 +184,21 @@ int PackingSimulation::nearestSkinPoints(Vec2 p, int excludeMesh, SkinHit* hits)
     // The side test needs the normal at the closest feature: a vertex's pseudo-normal at the
     // segment's ends, else the segment's own.
     Vec2 normal = t <= 0.0 ? vertexNormal_[a] : (t >= 1.0 ? vertexNormal_[b] : segmentNormal_[s]);
-    hits[slot] = {mesh, s, t, d2, q, normal};
+    hits[slot] = {mesh, s, t, d2, image == 0 ? q : q + offset, normal, image};
   });
-  return count;
+}
+
+void PackingSimulation::wrapMeshes(std::size_t meshBegin, std::size_t meshEnd) {
+  const Vec2 period = parameters_.period;
+  for (std::size_t m = meshBegin; m < meshEnd; ++m) {
+    const MeshInstance& mesh = meshes_[m];
+    Vec2 centre;
+    for (int v = mesh.vertexBegin; v < mesh.vertexBegin + mesh.vertexCount; ++v) centre += position_[v];
+    centre = centre / static_cast<double>(mesh.vertexCount);
+    Vec2 shift{-std::floor(centre.x / period.x) * period.x, -std::floor(centre.y / period.y) * period.y};
+    if (shift.x == 0.0 && shift.y == 0.0) continue;
+    for (int v = mesh.vertexBegin; v < mesh.vertexBegin + mesh.vertexCount; ++v) position_[v] += shift;
+  }
 }
 
 void PackingSimulation::computeForces(std::size_t vertexBegin, std::size_t vertexEnd) {
@@ -195,15 +231,20 @@ void PackingSimulation::computeForces(std::size_t vertexBegin, std::size_t verte
     for (int k = springStart_[v]; k < springStart_[v + 1]; ++k)
       f += forces::edge(x, position_[springOther_[k]], springRest_[k] * mesh.growth, springStiffness_[k]);
 
-    // Eq. 4.5: back into the container (its own one, when there are several).
-    const RegionIndex& region = parts_.empty() ? container_ : *parts_[mesh.container];
-    RegionIndex::Query q = region.query(x, false);
-    if (!q.inside) {
-      if (!q.computed) q = region.query(x, true);
-      f += forces::boundary(x, q.closest, P.boundaryStrength);
+    // Eq. 4.5: back into the container (its own one, when there are several). A periodic tile
+    // has no walls (thesis 4.8).
+    if (periodic()) {
+      outsideContainer_[v] = 0;
+    } else {
+      const RegionIndex& region = parts_.empty() ? container_ : *parts_[mesh.container];
+      RegionIndex::Query q = region.query(x, false);
+      if (!q.inside) {
+        if (!q.computed) q = region.query(x, true);
+        f += forces::boundary(x, q.closest, P.boundaryStrength);
+      }
+      // Outside by more than the tolerance: no room to grow (see updateMeshes).
+      outsideContainer_[v] = (!q.inside && q.distance > P.outsideTolerance) ? 1 : 0;
     }
-    // Outside by more than the tolerance: no room to grow (see updateMeshes).
-    outsideContainer_[v] = (!q.inside && q.distance > P.outsideTolerance) ? 1 : 0;
 
     // Eq. 4.6: optional preferred orientation.
     if (P.torsionStrength > 0.0) {
@@ -261,6 +302,11 @@ void PackingSimulation::applyCornerForces() {
   }
 }
 
+void PackingSimulation::applyDockForces() {
+  for (const Dock& dock : docks_)
+    if (!meshes_[meshOf_[dock.vertex]].frozen) force_[dock.vertex] += (dock.anchor - position_[dock.vertex]) * dockStrength_;
+}
+
 void PackingSimulation::integrate(std::size_t vertexBegin, std::size_t vertexEnd) {
   const double dt = parameters_.timeStep, cap = parameters_.velocityCap;
   const double keep = 1.0 - parameters_.damping;
@@ -292,10 +338,15 @@ void PackingSimulation::updateMeshes(std::size_t meshBegin, std::size_t meshEnd)
 }
 
 void PackingSimulation::step() {
+  if (periodic()) {
+    pool_.parallelFor(meshes_.size(), 4, [this](std::size_t b, std::size_t e) { wrapMeshes(b, e); });
+    vertexExtent_ = bounds(position_);
+  }
   grid_.rebuild(position_.data(), segmentEnds_.data(), segmentMesh_.size());
   pool_.parallelFor(meshes_.size(), 4, [this](std::size_t b, std::size_t e) { prepareSkins(b, e); });
   pool_.parallelFor(position_.size(), kVertexGrain, [this](std::size_t b, std::size_t e) { computeForces(b, e); });
   applyCornerForces();
+  if (!docks_.empty()) applyDockForces();
   pool_.parallelFor(position_.size(), kVertexGrain, [this](std::size_t b, std::size_t e) { integrate(b, e); });
   // Flags come from this step's force pass; areas from the new positions.
   updateMeshes(0, meshes_.size());

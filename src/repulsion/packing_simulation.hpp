@@ -27,6 +27,9 @@ struct SimulationParameters {
   double growthRate = 0.01;
   double cellSize = 30.0;  // neighbour grid cell; also the repulsion cut-off distance
   double outsideTolerance = 2.0;  // a vertex further outside the container blocks growth
+  // Tile W × H (thesis 4.8): a periodic domain [0, W] × [0, H]; every mesh also acts through
+  // its clones at offsets (k W, l H), k, l ∈ {-1, 0, 1}, and there are no walls. 0: off.
+  Vec2 period{};
 };
 
 struct MeshInstance {
@@ -67,6 +70,10 @@ class PackingSimulation {
   // Torsion (eq. 4.6) toward the field's angle at each mesh's current centre instead of the
   // angle it was added with. Call before `finalize`.
   void setOrientationField(const OrientationRamp& ramp) { orientationRamp_ = ramp; }
+  // Docking springs (shape matching, thesis 4.7): each pulls one vertex toward its anchor with
+  // force strength × (anchor − x), holding a matched element at its container corner.
+  struct Dock { int vertex; Vec2 anchor; };
+  void setDocks(std::vector<Dock> docks, double strength) { docks_ = std::move(docks); dockStrength_ = strength; }
 
   void step();
 
@@ -95,6 +102,7 @@ class PackingSimulation {
   void integrate(std::size_t vertexBegin, std::size_t vertexEnd);
   void updateMeshes(std::size_t meshBegin, std::size_t meshEnd);
   void applyCornerForces();
+  void applyDockForces();
 
   // The closest skin point of each mesh (other than `excludeMesh`) within the cut-off of p.
   static constexpr int kMaxNeighbours = 24;
@@ -102,9 +110,16 @@ class PackingSimulation {
     int mesh, segment;
     double t, d2;
     Vec2 point, normal;  // outward normal at the closest feature
+    int image = 0;       // which periodic clone of `mesh` (0: the mesh itself); see periodicOffset
     bool contains(Vec2 p) const { return dot(p - point, normal) < 0.0; }
   };
   int nearestSkinPoints(Vec2 p, int excludeMesh, SkinHit* hits) const;
+  // Periodic domain (tile mode): the hits of p - offset, reported at the clone `image`.
+  void nearestSkinPointsOf(Vec2 p, Vec2 offset, int image, int excludeMesh, SkinHit* hits, int& count) const;
+  bool periodic() const { return parameters_.period.x > 0.0 && parameters_.period.y > 0.0; }
+  Vec2 periodicOffset(int image) const;
+  // A mesh whose centre left the tile moves whole by ±W / ±H (never single vertices).
+  void wrapMeshes(std::size_t meshBegin, std::size_t meshEnd);
 
   const RegionIndex& container_;
   double containerArea_;
@@ -136,7 +151,10 @@ class PackingSimulation {
   std::vector<const RegionIndex*> parts_;  // empty: every mesh in `container_`
   OrientationRamp orientationRamp_;
   std::vector<Vec2> meshTorsionTurn_;      // (cos, sin) from the added angle to the field's
+  std::vector<Dock> docks_;
+  double dockStrength_ = 0.0;
   SegmentGrid grid_;
+  Box vertexExtent_;  // periodic domain: bounds of all vertices, to skip far clones
 
   // Build-time only.
   struct PendingSprings { std::vector<std::pair<int, int>> ends; std::vector<double> rest, stiffness; } pending_;

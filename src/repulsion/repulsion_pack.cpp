@@ -1,13 +1,17 @@
 // packRepulsion: canonical frame, element preparation, seeding, simulation, art replay.
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include "containers.hpp"
+#include "corner_docking.hpp"
 #include "packing_simulation.hpp"
 #include "pak/clipping.hpp"
 #include "pak/error.hpp"
 #include "pak/repulsion.hpp"
+#include "pak/tiling.hpp"
 #include "seeding.hpp"
 
 namespace pak {
@@ -55,6 +59,10 @@ void checkOptions(const RepulsionOptions& o) {
   if (!(o.damping >= 0.0 && o.damping < 1.0)) throw InputError("", "damping must be in [0, 1)");
   if (o.meshSpacing < 0.0 || o.count < 0 || o.maxIterations < 0 || o.stallWindow < 1 || o.cellSize < 0.0)
     throw InputError("", "mesh spacing, count, cell size, max iterations and stall window must not be negative");
+  if (!(o.dockingStrength >= 0.0) || !std::isfinite(o.dockingStrength))
+    throw InputError("", "docking strength must be a non-negative number");
+  if (o.tile != Vec2{} && !isTiled(o.tile)) throw InputError("", "tile size must be two positive numbers W,H");
+  if (o.shapeMatching && isTiled(o.tile)) throw InputError("", "shape matching needs container corners; a tile has none");
   if (o.count > 100000) throw InputError("", "count " + std::to_string(o.count) + " is absurdly large");
   if (o.orientationField.axis != 'x' && o.orientationField.axis != 'y')
     throw InputError("", "orientation field axis must be x or y");
@@ -118,7 +126,7 @@ std::vector<PreparedElement> prepareLibrary(const Library& library, double nomin
 
 // Skins of the seeded meshes at growth g: overlap-free and inside the container?
 bool seedingIsClear(const std::vector<PreparedElement>& types, const std::vector<Seed>& seeds, double g,
-                    const std::vector<const RegionIndex*>& containers) {
+                    const std::vector<const RegionIndex*>& containers, Vec2 period = {}) {
   std::vector<Region> skins;
   std::vector<Box> boxes;
   for (const Seed& s : seeds) {
@@ -126,7 +134,7 @@ bool seedingIsClear(const std::vector<PreparedElement>& types, const std::vector
     Ring ring;
     for (int k = 0; k < mesh.boundaryCount; ++k) {
       Vec2 p = s.position + rotated(mesh.mesh.vertices[k] - mesh.restCentroid, s.angle) * g;
-      if (!containers[s.container]->query(p, false).inside) return false;
+      if (!isTiled(period) && !containers[s.container]->query(p, false).inside) return false;  // a tile has no walls
       ring.push_back(p);
     }
     boxes.push_back(bounds(ring));
@@ -135,7 +143,7 @@ bool seedingIsClear(const std::vector<PreparedElement>& types, const std::vector
   for (std::size_t i = 0; i < skins.size(); ++i)
     for (std::size_t j = i + 1; j < skins.size(); ++j)
       if (boxes[i].overlaps(boxes[j]) && area(intersect(skins[i], skins[j])) > 0.0) return false;
-  return true;
+  return !isTiled(period) || !clonesOverlap(skins, period);
 }
 
 Packing collectPacking(const PackingSimulation& sim, const std::vector<PreparedElement>& types,
@@ -178,6 +186,9 @@ Packing collectPacking(const PackingSimulation& sim, const std::vector<PreparedE
 Packing packRepulsion(const Scene& scene, const Library& library, const RepulsionOptions& options,
                       const RepulsionCallbacks& callbacks) {
   checkOptions(options);
+  // Tile mode packs the rectangle [0, W] × [0, H] in place of the scene's container.
+  if (isTiled(options.tile) && !isTileScene(scene, options.tile))
+    return packRepulsion(tileScene(options.tile), library, options, callbacks);
   if (library.empty()) throw InputError("", "no elements to pack");
   Box box = bounds(scene.container);
   double containerAreaInput = area(scene.container);
@@ -218,7 +229,8 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Repulsio
     partIndex.push_back(parts.size() > 1 ? &partIndexes.back() : &containerIndex);
     partSeeding.push_back({&parts[c], partIndex[c], partCounts[c], containers.typesOf[c]});
   }
-  std::vector<Seed> seeds = seedContainers(partSeeding, options.seed);
+  const Vec2 period = isTiled(options.tile) ? options.tile * frame.scale : Vec2{};
+  std::vector<Seed> seeds = seedContainers(partSeeding, options.seed, period);
   if (seeds.empty()) throw InputError(scene.source, "container too small to seed any element");
   // Preferred orientation: seeded at the angle the torsion will hold (eq. 4.6).
   const OrientationRamp ramp = options.orientation == OrientationMode::Field
@@ -226,12 +238,33 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Repulsio
                                    : OrientationRamp{};
   if (options.orientation != OrientationMode::Random)
     for (Seed& s : seeds) s.angle = ramp.active ? ramp.angleAt(s.position) : 0.0;
+  // Shape matching (4.7): elements that fit the salient corners take the nearest seeds.
+  std::optional<CornerDocking> docking;
+  const auto matchingStart = std::chrono::steady_clock::now();
+  if (options.shapeMatching) {
+    std::vector<const ElementMesh*> meshes;
+    std::vector<const Region*> outlines;
+    for (const PreparedElement& t : types) { meshes.push_back(&t.mesh); outlines.push_back(&t.outline); }
+    docking.emplace(container, meshes, outlines, options.gap, seeds);
+  }
+  const double matchingSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - matchingStart).count();
 
   // Shrink everything alike until the seeded skins cover `initialCoverage` without overlap.
   double seededSkin = 0.0;
   for (const Seed& s : seeds) seededSkin += types[s.type].mesh.skinArea;
   double g0 = std::sqrt(options.initialCoverage * containerArea / seededSkin);
-  for (int attempt = 0; attempt < 30 && !seedingIsClear(types, seeds, g0, partIndex); ++attempt) g0 *= 0.9;
+  // A docked seed may have moved to another container's corner: it belongs where it now is.
+  auto reassignContainers = [&] {
+    if (parts.size() > 1)
+      for (Seed& s : seeds)
+        for (std::size_t c = 0; c < parts.size(); ++c)
+          if (partIndex[c]->query(s.position, false).inside) { s.container = static_cast<int>(c); break; }
+  };
+  if (docking) { docking->position(g0, containerIndex, seeds); reassignContainers(); }
+  for (int attempt = 0; attempt < 30 && !seedingIsClear(types, seeds, g0, partIndex, period); ++attempt) {
+    g0 *= 0.9;
+    if (docking) { docking->position(g0, containerIndex, seeds); reassignContainers(); }
+  }
 
   SimulationParameters parameters;
   parameters.repulsionStrength = options.repulsionStrength;
@@ -249,6 +282,7 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Repulsio
   parameters.growthRate = options.growthRate;
   parameters.outsideTolerance = options.outsideTolerance;
   parameters.cellSize = options.cellSize > 0.0 ? options.cellSize : 2.0 * spacing;
+  parameters.period = period;
 
   ThreadPool pool(options.threads);
   PackingSimulation sim(containerIndex, containerArea, parameters, pool);
@@ -266,6 +300,7 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Repulsio
     sim.setContainerCorners(PackingSimulation::reflexCorners(container));
   }
   if (ramp.active) sim.setOrientationField(ramp);
+  if (docking) sim.setDocks(docking->docks(sim), options.dockingStrength);
   Box area = bounds(container);
   Vec2 margin{0.1 * kCanonicalSide, 0.1 * kCanonicalSide};
   area.add(area.min - margin);
@@ -308,6 +343,12 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Repulsio
   Packing packing = collectPacking(sim, types, frame, scene.container);
   packing.stopReason = reason;
   packing.containers = partsInput;
+  if (docking) {
+    for (const SalientCorner& c : docking->match().corners) packing.salientCorners.push_back(frame.toInput(c.position));
+    packing.dockedElements = docking->dockedCount();
+    packing.shapeMatchingSeconds = matchingSeconds;
+  }
+  packing.tile = isTiled(options.tile) ? options.tile : Vec2{};
   return packing;
 }
 

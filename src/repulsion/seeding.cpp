@@ -7,6 +7,7 @@
 
 #include "pak/blue_noise.hpp"
 #include "pak/rng.hpp"
+#include "pak/tiling.hpp"
 
 namespace pak {
 
@@ -28,8 +29,9 @@ std::vector<Seed> seedElements(const Region& region, const RegionIndex& index, c
   // Score = distance to the nearest chosen seed, with the boundary counting as a seed at
   // half the distance (so seeds keep about half a spacing from the container's edge).
   std::vector<double> score(candidates.size());
+  const bool periodic = isTiled(options.period);  // a tile has no boundary
   for (std::size_t i = 0; i < candidates.size(); ++i)
-    score[i] = 2.0 * index.query(candidates[i], true).distance;
+    score[i] = periodic ? std::numeric_limits<double>::infinity() : 2.0 * index.query(candidates[i], true).distance;
   Rng rng(options.seed);
   std::vector<Vec2> chosen;
   std::size_t next = static_cast<std::size_t>(rng.below(candidates.size()));
@@ -45,7 +47,8 @@ std::vector<Seed> seedElements(const Region& region, const RegionIndex& index, c
     }
     Vec2 p = candidates[next];
     chosen.push_back(p);
-    for (std::size_t i = 0; i < candidates.size(); ++i) score[i] = std::min(score[i], distance(candidates[i], p));
+    for (std::size_t i = 0; i < candidates.size(); ++i) score[i] = std::min(score[i], periodic ? periodicDistance(candidates[i], p, options.period)
+                                                                                 : distance(candidates[i], p));
   }
   // Random order, types cycled, random orientation.
   for (std::size_t i = chosen.size(); i > 1; --i) std::swap(chosen[i - 1], chosen[rng.below(i)]);

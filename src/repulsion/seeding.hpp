@@ -20,6 +20,7 @@ struct SeedingOptions {
   int count = 1;
   int types = 1;
   std::uint64_t seed = 1;
+  Vec2 period{};  // tile W × H: distances on the torus and no boundary (thesis 4.8); 0: off
 };
 
 // `count` points spread evenly over `region` (blue-noise candidates, then farthest-point

@@ -82,3 +82,37 @@ TEST(CliPack, BadOptionsAreOneClearErrorLine) {
     EXPECT_FALSE(std::filesystem::exists(dir.file("o.svg"))) << args;
   }
 }
+
+TEST(CliPack, TileWritesAClippedSeamlessTileAndAPreview) {
+  ScratchFolder dir("cli-pack-tile");
+  PakRun run = runPak("pack --tile 400,300 -e examples/elements --count 6 --gap 16 --max-iterations 600 --quiet -o " +
+                      shellQuoted(dir.file("tile.svg")) + " --tile-preview " + shellQuoted(dir.file("preview.png")) +
+                      " --tile-preview-repeat 2 --report " + shellQuoted(dir.file("report.json")));
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  std::string svg = readWholeFile(dir.file("tile.svg"));
+  EXPECT_NE(svg.find("viewBox=\"0 0 400 300\""), std::string::npos);
+  EXPECT_EQ(count(svg, "<clipPath"), 1);
+  EXPECT_EQ(count(svg, "clip-path=\"url(#pak-clip-1)\""), 1);
+  EXPECT_EQ(count(svg, "class=\"element\""), 6);
+  EXPECT_TRUE(std::filesystem::file_size(dir.file("preview.png")) > 1000);
+  auto report = nlohmann::json::parse(readWholeFile(dir.file("report.json")));
+  EXPECT_EQ(report["tile"], nlohmann::json::array({400.0, 300.0}));
+  EXPECT_EQ(report["overlap-count"], 0);      // checked on the torus, seams included
+  EXPECT_EQ(report["elements-outside"], 0);   // clones clipped to the tile
+}
+
+TEST(CliPack, TileOptionErrors) {
+  ScratchFolder dir("cli-pack-tile-errors");
+  std::string out = " -o " + shellQuoted(dir.file("x.svg"));
+  for (const std::string& args : {std::string("pack --tile 400 -e examples/elements"),
+                                  std::string("pack --tile 400,-3 -e examples/elements"),
+                                  std::string("pack --tile 400,300 -c examples/scene.svg -e examples/elements"),
+                                  std::string("pack -e examples/elements"),
+                                  std::string("pack -c examples/scene.svg -e examples/elements --tile-preview p.png")}) {
+    PakRun run = runPak(args + out);
+    EXPECT_EQ(run.exitCode, 2) << args;
+    ASSERT_EQ(run.errLines().size(), 1u) << args << ": " << run.err;
+    EXPECT_EQ(run.errLines()[0].rfind("pak: error: ", 0), 0u) << run.err;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("x.svg")));
+  }
+}
