@@ -51,6 +51,7 @@ const NumberOption kNumberOptions[] = {
     {"k-edge", &RepulsionOptions::edgeStrength, "k_edg for edge and shear springs (eq. 4.3): higher keeps shapes stiffer"},
     {"k-negative-space", &RepulsionOptions::negativeSpaceStrength, "k_edg for negative-space springs"},
     {"k-torsion", &RepulsionOptions::torsionStrength, "k_tor, pull toward the seeded orientation (eq. 4.6; 0: off)"},
+    {"orientation-torsion", &RepulsionOptions::orientationTorsion, "k_tor used with --orientation upright/field when --k-torsion is 0"},
     {"soft", &RepulsionOptions::soft, "the soft parameter of eq. 4.2"},
     {"time-step", &RepulsionOptions::timeStep, "Δt of the explicit Euler step"},
     {"velocity-cap", &RepulsionOptions::velocityCap, "largest vertex speed (canonical units per unit time)"},
@@ -86,6 +87,7 @@ struct PackArguments {
   int progressEvery = 0;
   bool quiet = false, debugLayers = false;
   std::uint64_t seed = 1;
+  std::string orientation = "random", orientationField = "x:0:180", containerLayer = "container";
   RepulsionOptions options;
   CLI::App* command = nullptr;
 };
@@ -101,7 +103,8 @@ void applyConfig(PackArguments& args) {
   }
   if (!json.is_object()) throw InputError(args.config, "expected a JSON object of option names to values");
   for (auto& [key, value] : json.items()) {
-    bool isOption = key == "seed" || key == "stall-on-measured-area" || key == "shape-matching";
+    bool isOption = key == "seed" || key == "stall-on-measured-area" || key == "shape-matching" ||
+                    key == "orientation" || key == "orientation-field" || key == "container-layer";
     for (const auto& o : kNumberOptions) isOption |= key == o.name;
     for (const auto& o : kIntegerOptions) isOption |= key == o.name;
     if (!isOption) throw InputError(args.config, "unknown option \"" + key + "\"");
@@ -128,6 +131,12 @@ void applyConfig(PackArguments& args) {
     if (key == "shape-matching") {
       if (!value.is_boolean()) throw InputError(args.config, "\"shape-matching\" must be true or false");
       args.options.shapeMatching = value.get<bool>();
+      known = true;
+    }
+    if (key == "orientation" || key == "orientation-field" || key == "container-layer") {
+      if (!value.is_string()) throw InputError(args.config, "\"" + key + "\" must be a string");
+      (key == "orientation" ? args.orientation : key == "orientation-field" ? args.orientationField : args.containerLayer) =
+          value.get<std::string>();
       known = true;
     }
     if (key == "seed") {
@@ -172,6 +181,12 @@ int runPack(PackArguments& args) {
   }
   if (!args.config.empty()) applyConfig(args);
   args.options.seed = args.seed;
+  // A field given alone asks for the field.
+  if (args.command->count("--orientation-field") > 0 && args.command->count("--orientation") == 0 &&
+      args.orientation == "random")
+    args.orientation = "field";
+  args.options.orientation = parseOrientationMode(args.orientation);
+  args.options.orientationField = parseOrientationField(args.orientationField);
 
   if (!args.tile.empty()) args.options.tile = parseTileSize(args.tile);
   const bool tiled = isTiled(args.options.tile);
@@ -179,7 +194,9 @@ int runPack(PackArguments& args) {
   if (!tiled && args.container.empty()) throw InputError("", "--container is required (or --tile W,H)");
   if (!args.tilePreview.empty() && !tiled) throw InputError(args.tilePreview, "--tile-preview needs --tile W,H");
   if (args.tilePreviewRepeat < 1 || args.tilePreviewRepeat > 16) throw InputError("", "--tile-preview-repeat must be 1 to 16");
-  Scene scene = tiled ? tileScene(args.options.tile) : loadScene(args.container);
+  SceneOptions sceneOptions;
+  sceneOptions.containerLayer = args.containerLayer;
+  Scene scene = tiled ? tileScene(args.options.tile) : loadScene(args.container, sceneOptions);
   Library library = loadLibrary(args.elements);
   Library secondaryLibrary = args.secondary.empty() ? Library{} : loadLibrary(args.secondary);
   for (const Warning& w : scene.warnings)
@@ -267,6 +284,9 @@ int runPack(PackArguments& args) {
     for (const auto& o : kIntegerOptions) parameters[o.name] = args.options.*o.field;
     parameters["seed"] = args.seed;
     parameters["stall-on-measured-area"] = args.options.stallOnMeasuredArea;
+    parameters["orientation"] = toString(args.options.orientation);
+    parameters["orientation-field"] = args.orientationField;
+    parameters["container-layer"] = args.containerLayer;
     parameters["shape-matching"] = args.options.shapeMatching;
     parameters["threads-used"] = args.options.threads > 0 ? args.options.threads
                                                           : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
@@ -313,6 +333,10 @@ int runPack(PackArguments& args) {
     report["outside-area"] = check.outsideArea;
     report["problems"] = check.problems;
     report["canonical-scale"] = packing.canonicalScale;
+    std::vector<int> perContainer(packing.containers.size(), 0);
+    for (const PlacedElement& e : packing.elements)
+      if (e.container >= 0 && e.container < static_cast<int>(perContainer.size())) ++perContainer[e.container];
+    report["elements-per-container"] = perContainer;
     // Thesis 4.7's salient convex corners and how close the art comes to each (canonical
     // units), with or without shape matching, so runs can be compared.
     nlohmann::json corners = nlohmann::json::array();
@@ -372,6 +396,18 @@ const CommandRegistrar registrar{{"pack", [](CLI::App& app) {
   cmd->add_option("--report", args->report, "write a JSON report: parameters, iterations, times, fill ratios, overlaps");
   cmd->add_option("--snapshots", args->snapshots, "write intermediate SVGs into this folder");
   cmd->add_option("--every", args->every, "snapshot interval in iterations")->capture_default_str();
+  cmd->add_option("--orientation", args->orientation,
+                  "preferred orientation (eq. 4.6): random (random seeded angles, no torsion unless --k-torsion), "
+                  "upright (seeded as drawn and held there), field (seeded at and held to --orientation-field)")
+      ->capture_default_str();
+  cmd->add_option("--orientation-field", args->orientationField,
+                  "AXIS:FROM:TO, the rest angle in degrees (clockwise on screen, as SVG rotate) turning linearly "
+                  "from the container's left (x) or top (y) edge to the opposite one; alone it implies --orientation field")
+      ->capture_default_str();
+  cmd->add_option("--container-layer", args->containerLayer,
+                  "the scene layer holding the containers; 'elements' makes each element of a previous Pak "
+                  "packing a container")
+      ->capture_default_str();
   cmd->add_flag("--stall-on-measured-area", args->options.stallOnMeasuredArea,
                 "apply eq. 4.7 to the measured skin area, as the thesis does, instead of the meshes' rest area");
   cmd->add_flag("--shape-matching", args->options.shapeMatching,

@@ -35,6 +35,8 @@ struct Shape {
   int topGroup = -1;             // index of the enclosing top-level <g>, -1 if none
   int layerGroup = -1;           // index of the enclosing direct child <g> of the layer's group
                                  // (one packed element in Pak's output), -1 if none
+  std::string elements;          // `data-elements` of the shape or its nearest group that has
+                                 // one: the library a container shape asks for ("" if none)
 };
 
 // The region the shape's fill covers (fill rule applied; open subpaths closed, as SVG does).

@@ -4,6 +4,7 @@
 // with other layer names, or, with neither layer, "the largest closed shape is the container
 // and each top-level group or shape inside it is an element".
 #include <string>
+#include <vector>
 
 #include "pak/metrics.hpp"
 #include "pak/svg_reader.hpp"
@@ -19,5 +20,11 @@ struct PackingReadOptions {
 // entirely outside the container.
 PackingGeometry packingFromDocument(const SvgDocument& document, const PackingReadOptions& = {});
 PackingGeometry readPacking(const std::string& path, const PackingReadOptions& = {});
+
+// Unites the painted regions of shapes sharing a key (e.g. Shape::layerGroup: one placed
+// element), in document order of first appearance; key -1 means "a shape on its own".
+// Shapes that paint nothing are skipped, and so are groups of no area.
+std::vector<Region> outlinesByKey(const std::vector<const Shape*>& shapes, const std::vector<int>& keys,
+                                  const ClipOptions& clip);
 
 }  // namespace pak

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "pak/art.hpp"
+#include "pak/orientation.hpp"
 #include "pak/scene.hpp"
 
 namespace pak {
@@ -32,6 +33,12 @@ struct RepulsionOptions {
   double edgeStrength = 40.0;            // k_edg for edge and shear springs
   double negativeSpaceStrength = 10.0;   // k_edg for negative-space springs
   double torsionStrength = 0.0;          // k_tor (0: no preferred orientation)
+  // Preferred orientation (eq. 4.6, Figure 4.11): Upright and Field seed every element at its
+  // preferred angle and pull it there with k_tor = torsionStrength, or `orientationTorsion`
+  // when torsionStrength is 0. Random (default): random seeded angles, torsionStrength only.
+  OrientationMode orientation = OrientationMode::Random;
+  OrientationField orientationField;     // the angle per position, for OrientationMode::Field
+  double orientationTorsion = 10.0;      // k_tor for Upright/Field when torsionStrength is 0
   double soft = 1.0;                     // ς
   double timeStep = 0.1;                 // Δt
   double velocityCap = 2.0;              // |v| ≤ this (thesis: 5 Δt = 0.5; see docs/repulsionpak.md)
@@ -103,6 +110,7 @@ struct PlacedElement {
   bool secondary = false;   // placed by the secondary pass; libraryIndex is then in the secondary library
   double maxEdgeStrain = 0.0;  // largest |length / (g × rest length) − 1| over its edge springs
   double meanEdgeStrain = 0.0; // mean of the same over its edge springs
+  int container = 0;        // index into Packing::containers: the one it was seeded in
 };
 
 enum class StopReason { TargetFill, Stalled, IterationCap };
@@ -121,6 +129,7 @@ struct PackingPass {
 struct Packing {
   std::vector<PlacedElement> elements;
   Region container;              // input coordinates
+  std::vector<Region> containers;  // the separate containers (parts of `container`), input coordinates
   double canonicalScale = 1.0;   // canonical units per input unit
   int iterations = 0;
   StopReason stopReason = StopReason::IterationCap;

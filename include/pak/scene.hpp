@@ -16,12 +16,18 @@ struct Warning {
   std::string message;  // what was skipped and why
 };
 
+struct ContainerPart;
+
 struct Scene {
   std::string source;
   Box viewBox;                      // the document's coordinate box
   double width = 0.0, height = 0.0; // the document's size in its own user units
   std::vector<Shape> containerShapes;
   Region container;                 // union of the container shapes, holes subtracted
+  // The separate containers (disjoint parts of `container`, each with its holes, or one per
+  // element of a previous packing): every element stays in the one it was seeded in.
+  // Empty: each polygon of `container` is one container, filled from the run's library.
+  std::vector<ContainerPart> containers;
   std::vector<Shape> fixed;         // fixed elements: copied to the output, obstacles
   std::vector<Polyline> guides;     // FLOWPAK direction strokes
   std::vector<Polyline> spines;     // FLOWPAK fixed spines
@@ -38,5 +44,14 @@ struct ElementArt {
 };
 
 using Library = std::vector<ElementArt>;
+
+struct ContainerPart {
+  Region region;
+  // Its own library (the `data-elements` attribute of its shape or of an enclosing group):
+  // the files as resolved against the scene file, and the elements loadScene read from them.
+  // Empty: filled from the run's library.
+  std::vector<std::string> elementFiles;
+  Library library;
+};
 
 }  // namespace pak

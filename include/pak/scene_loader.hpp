@@ -17,6 +17,17 @@ SvgDocument readDocument(const std::string& path, const SvgReadOptions& = {});
 Scene sceneFromDocument(const SvgDocument& document);
 Scene loadScene(const std::string& path, const SvgReadOptions& = {});
 
+struct SceneOptions {
+  // The layer that holds the containers (matched lower-cased). Its disjoint parts are separate
+  // containers. `elements` reads a previous Pak packing: each placed element (the silhouette of
+  // what its art paints, inner holes filled) is one container.
+  std::string containerLayer = "container";
+};
+// As above, and Scene::containers: one per container, with the files of its `data-elements`
+// (comma-separated, relative to the scene file); loadScene also loads those libraries.
+Scene sceneFromDocument(const SvgDocument& document, const SceneOptions& sceneOptions);
+Scene loadScene(const std::string& path, const SceneOptions& sceneOptions, const SvgReadOptions& = {});
+
 // All visible shapes of the document form one element; an optional <path id="spine">.
 // Throws InputError when the element paints no area.
 ElementArt elementFromDocument(const SvgDocument& document);

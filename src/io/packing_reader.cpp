@@ -37,6 +37,8 @@ bool hasLayer(const SvgDocument& document, const std::string& name) {
   return std::find(document.layers.begin(), document.layers.end(), name) != document.layers.end();
 }
 
+}  // namespace
+
 // Unites the painted regions of shapes sharing a key, in document order of first appearance;
 // key -1 means "a shape on its own".
 std::vector<Region> outlinesByKey(const std::vector<const Shape*>& shapes, const std::vector<int>& keys,
@@ -59,6 +61,8 @@ std::vector<Region> outlinesByKey(const std::vector<const Shape*>& shapes, const
   }
   return outlines;
 }
+
+namespace {
 
 // Pak's layout or named layers: the container layer minus any `holes` layer; one element per
 // child group of the elements layer (a shape directly in the layer is an element by itself).

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "pak/error.hpp"
+#include "pak/packing_reader.hpp"
 #include "pak/path_reader.hpp"
 
 namespace pak {
@@ -87,7 +88,45 @@ SvgDocument readDocument(const std::string& path, const SvgReadOptions& options)
   throw InputError(path, "unknown file type '" + extension + "' (Pak reads .svg and .path files)");
 }
 
-Scene sceneFromDocument(const SvgDocument& document) {
+Scene sceneFromDocument(const SvgDocument& document) { return sceneFromDocument(document, SceneOptions{}); }
+
+namespace {
+
+// `data-elements="a.svg, b/"`: the files and folders, relative to the scene file.
+std::vector<std::string> elementFilesOf(const std::string& attribute, const std::string& sceneFile) {
+  std::vector<std::string> files;
+  std::size_t begin = 0;
+  while (begin <= attribute.size()) {
+    std::size_t end = std::min(attribute.find(',', begin), attribute.size());
+    std::string name = attribute.substr(begin, end - begin);
+    name.erase(0, name.find_first_not_of(" \t\n\r"));
+    name.erase(name.find_last_not_of(" \t\n\r") + 1);
+    if (!name.empty()) {
+      fs::path path(name);
+      files.push_back(path.is_absolute() ? name : (fs::path(sceneFile).parent_path() / path).string());
+    }
+    begin = end + 1;
+  }
+  if (files.empty()) throw InputError(sceneFile, "data-elements=\"" + attribute + "\" names no file");
+  return files;
+}
+
+// A region's outer rings only: the silhouette of an element's art.
+Region silhouette(const Region& region) {
+  Region filled;
+  for (const Polygon& polygon : region) filled.push_back(Polygon{polygon.outer, {}});
+  return filled;
+}
+
+}  // namespace
+
+Scene sceneFromDocument(const SvgDocument& document, const SceneOptions& sceneOptions) {
+  const std::string containerLayer = lowerCased(sceneOptions.containerLayer);
+  if (containerLayer.empty() || (containerLayer != "elements" && isHelperLayer(containerLayer)))
+    throw InputError(document.file, "--container-layer '" + sceneOptions.containerLayer +
+                                        "' cannot hold containers (use container, elements or your own layer name)");
+  // `elements`: a previous packing; each placed element is one container.
+  const bool elementContainers = containerLayer == "elements";
   Scene scene;
   scene.source = document.file;
   scene.viewBox = document.viewBox;
@@ -100,11 +139,21 @@ Scene sceneFromDocument(const SvgDocument& document) {
   const double closeEpsilon = std::max(clip.precision, 1e-9 * std::max(box.width(), box.height()));
 
   const bool hasContainerLayer = std::any_of(document.shapes.begin(), document.shapes.end(),
-                                             [](const Shape& s) { return s.layer == "container"; });
+                                             [&](const Shape& s) { return s.layer == containerLayer; });
+  if (!hasContainerLayer && containerLayer != "container")
+    throw InputError(document.file, "no usable container: the file has no shape in a layer named '" + containerLayer + "'");
   std::vector<Region> containerRegions, holeRegions;
+  std::vector<std::string> regionElements;  // data-elements of each container region's shape
+  std::vector<const Shape*> elementShapes;  // --container-layer elements: the placed elements' art
+  std::vector<int> elementKeys;
   for (std::size_t i = 0; i < document.shapes.size(); ++i) {
     const Shape& shape = document.shapes[i];
-    if (shape.layer == "fixed") {
+    if (elementContainers && shape.layer == containerLayer) {
+      scene.containerShapes.push_back(shape);
+      scene.containerShapes.back().layer = "container";  // drawn as the artist drew it, under the new elements
+      elementShapes.push_back(&shape);
+      elementKeys.push_back(shape.layerGroup);
+    } else if (shape.layer == "fixed") {
       scene.fixed.push_back(shape);
     } else if (shape.layer == "guides" || shape.layer == "spines") {
       for (const Subpath& subpath : shape.subpaths)
@@ -113,7 +162,9 @@ Scene sceneFromDocument(const SvgDocument& document) {
     } else if (shape.layer == "holes") {
       Region hole = enclosedRegion(shape, document.file, i, closeEpsilon, clip);
       if (!hole.empty()) holeRegions.push_back(std::move(hole));
-    } else if (hasContainerLayer ? shape.layer == "container" : !isHelperLayer(shape.layer)) {
+    } else if (elementContainers) {
+      continue;  // the previous packing's own container and other layers: not containers now
+    } else if (hasContainerLayer ? shape.layer == containerLayer : !isHelperLayer(shape.layer)) {
       // Without a container layer, every shape outside the helper layers outlines the container.
       scene.containerShapes.push_back(shape);
       Region region = enclosedRegion(shape, document.file, i, closeEpsilon, clip);
@@ -122,7 +173,13 @@ Scene sceneFromDocument(const SvgDocument& document) {
         continue;
       }
       containerRegions.push_back(std::move(region));
+      regionElements.push_back(shape.elements);
     }
+  }
+  if (elementContainers) {
+    for (Region& outline : outlinesByKey(elementShapes, elementKeys, clip))
+      containerRegions.push_back(silhouette(outline));
+    if (containerRegions.empty()) throw InputError(document.file, "no usable container: the elements paint no area");
   }
 
   if (scene.containerShapes.empty())
@@ -137,11 +194,50 @@ Scene sceneFromDocument(const SvgDocument& document) {
   normalizeOrientation(scene.container);
   if (area(scene.container) <= 0.0)
     throw InputError(document.file, "no usable container: the holes cover the whole container");
+
+  // The separate containers: each placed element of a previous packing, else each disjoint
+  // part of the union (with its holes), asking for the library of the first shape that
+  // overlaps it and names one.
+  const Region holes = holeRegions.empty() ? Region{} : unite(holeRegions, clip);
+  if (elementContainers) {
+    for (const Region& region : containerRegions) {
+      Region part = holes.empty() ? region : subtract(region, holes, clip);
+      normalizeOrientation(part);
+      if (area(part) > 0.0) scene.containers.push_back({std::move(part), {}, {}});
+    }
+  } else {
+    for (const Polygon& polygon : scene.container) {
+      ContainerPart part{Region{polygon}, {}, {}};
+      for (std::size_t r = 0; r < containerRegions.size() && part.elementFiles.empty(); ++r)
+        if (!regionElements[r].empty() && area(intersect(part.region, containerRegions[r], clip)) > 0.0)
+          part.elementFiles = elementFilesOf(regionElements[r], document.file);
+      scene.containers.push_back(std::move(part));
+    }
+  }
   return scene;
 }
 
 Scene loadScene(const std::string& path, const SvgReadOptions& options) {
   return sceneFromDocument(readDocument(path, options));
+}
+
+Scene loadScene(const std::string& path, const SceneOptions& sceneOptions, const SvgReadOptions& options) {
+  Scene scene = sceneFromDocument(readDocument(path, options), sceneOptions);
+  // Each distinct data-elements list is read once.
+  std::map<std::vector<std::string>, Library> loaded;
+  for (ContainerPart& part : scene.containers) {
+    if (part.elementFiles.empty()) continue;
+    auto found = loaded.find(part.elementFiles);
+    if (found == loaded.end()) {
+      try {
+        found = loaded.emplace(part.elementFiles, loadLibrary(part.elementFiles, options)).first;
+      } catch (const InputError& error) {
+        throw InputError(path, std::string("data-elements: ") + error.what());
+      }
+    }
+    part.library = found->second;
+  }
+  return scene;
 }
 
 ElementArt elementFromDocument(const SvgDocument& document) {

@@ -330,9 +330,11 @@ class NodeContext {
         layer_(parent.layer_),
         layerKnown_(parent.layerKnown_),
         topGroup_(parent.topGroup_),
-        layerGroup_(parent.layerGroup_) {
+        layerGroup_(parent.layerGroup_),
+        elements_(parent.elements_) {
     tag_ = std::string(node->local_name(), node->local_name_size());
     id_ = attributeOf(node, "id");
+    if (std::string own = attributeOf(node, "data-elements"); !own.empty()) elements_ = std::move(own);
     if (tag_ == "defs") nonRendered_ = true;
     if (tag_ == "g") {
       if (parent.isRoot_) topGroup_ = state_->topLevelGroups++;
@@ -487,6 +489,7 @@ class NodeContext {
   bool isLayerGroup_ = false; // this group names the layer: its child groups are numbered
   int childGroups_ = 0;
   bool isRoot_ = false;
+  std::string elements_;      // see Shape::elements
 
  private:
   // The layer of a named group: the nearest ancestor named like a Pak layer wins, else the
@@ -618,6 +621,7 @@ class ShapeContext : public NodeContext {
     shape.layer = layer_;
     shape.topGroup = topGroup_;
     shape.layerGroup = layerGroup_;
+    shape.elements = elements_;
     pending.fill = style_.fill;
     pending.stroke = style_.stroke;
     pending.fillOpacity = style_.fillOpacity;

@@ -37,6 +37,7 @@ int PackingSimulation::addMesh(const ElementMesh& mesh, int type, Vec2 position,
   instance.growth = growth;
   instance.frozen = frozen;
   instance.restArea = mesh.skinArea;
+  instance.restAngle = angle;
   int id = static_cast<int>(meshes_.size());
   for (Vec2 v : mesh.mesh.vertices) {
     Vec2 offset = rotated(v - mesh.restCentroid, angle);
@@ -71,6 +72,7 @@ void PackingSimulation::finalize(const Box& area) {
   segmentNormal_.assign(segmentMesh_.size(), {});
   meshCentre_.assign(meshes_.size(), {});
   meshOnCorner_.assign(meshes_.size(), 0);
+  meshTorsionTurn_.assign(meshes_.size(), Vec2{1.0, 0.0});
 
   // Springs by vertex: counting sort of both ends, in spring order (deterministic).
   springStart_.assign(n + 1, 0);
@@ -122,6 +124,10 @@ void PackingSimulation::prepareSkins(std::size_t meshBegin, std::size_t meshEnd)
     Vec2 centre;
     for (int v = mesh.vertexBegin; v < mesh.vertexBegin + mesh.vertexCount; ++v) centre += position_[v];
     meshCentre_[m] = centre / static_cast<double>(mesh.vertexCount);
+    if (orientationRamp_.active) {
+      const double turn = orientationRamp_.angleAt(meshCentre_[m]) - mesh.restAngle;
+      meshTorsionTurn_[m] = {std::cos(turn), std::sin(turn)};
+    }
     int nb = mesh.boundaryCount;
     for (int k = 0; k < nb; ++k) {
       Vec2 a = position_[mesh.vertexBegin + k], b = position_[mesh.vertexBegin + (k + 1) % nb];
@@ -225,13 +231,15 @@ void PackingSimulation::computeForces(std::size_t vertexBegin, std::size_t verte
     for (int k = springStart_[v]; k < springStart_[v + 1]; ++k)
       f += forces::edge(x, position_[springOther_[k]], springRest_[k] * mesh.growth, springStiffness_[k]);
 
-    // Eq. 4.5: back into the container. A periodic tile has no walls (thesis 4.8).
+    // Eq. 4.5: back into the container (its own one, when there are several). A periodic tile
+    // has no walls (thesis 4.8).
     if (periodic()) {
       outsideContainer_[v] = 0;
     } else {
-      RegionIndex::Query q = container_.query(x, false);
+      const RegionIndex& region = parts_.empty() ? container_ : *parts_[mesh.container];
+      RegionIndex::Query q = region.query(x, false);
       if (!q.inside) {
-        if (!q.computed) q = container_.query(x, true);
+        if (!q.computed) q = region.query(x, true);
         f += forces::boundary(x, q.closest, P.boundaryStrength);
       }
       // Outside by more than the tolerance: no room to grow (see updateMeshes).
@@ -239,7 +247,14 @@ void PackingSimulation::computeForces(std::size_t vertexBegin, std::size_t verte
     }
 
     // Eq. 4.6: optional preferred orientation.
-    if (P.torsionStrength > 0.0) f += forces::torsion(x, meshCentre_[m], restDirection_[v], P.torsionStrength);
+    if (P.torsionStrength > 0.0) {
+      Vec2 rest = restDirection_[v];
+      if (orientationRamp_.active) {  // rotated from the added angle to the field's here
+        const Vec2 t = meshTorsionTurn_[m];
+        rest = {rest.x * t.x - rest.y * t.y, rest.x * t.y + rest.y * t.x};
+      }
+      f += forces::torsion(x, meshCentre_[m], rest, P.torsionStrength);
+    }
 
     force_[v] = f;
   }
@@ -276,6 +291,7 @@ void PackingSimulation::applyCornerForces() {
     for (int k = 0; k < count; ++k) {
       const SkinHit& h = hits[k];
       if (meshes_[h.mesh].frozen || !h.contains(c)) continue;
+      if (corner.container >= 0 && meshes_[h.mesh].container != corner.container) continue;
       int a = segmentEnds_[2 * h.segment], b = segmentEnds_[2 * h.segment + 1];
       // Push the segment past the corner, shared between its ends by proximity.
       Vec2 push = corner.inward * (parameters_.boundaryStrength * std::sqrt(h.d2));

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "pak/element_mesh.hpp"
+#include "pak/orientation.hpp"
 #include "pak/parallel.hpp"
 #include "pak/region_index.hpp"
 #include "pak/segment_grid.hpp"
@@ -43,6 +44,8 @@ struct MeshInstance {
   bool outside = false;         // some vertex is outside the container
   double area = 0.0;            // area enclosed by its skin, updated every step
   double restArea = 0.0;        // skin area at growth 1
+  int container = 0;            // which of setContainerParts' regions holds it
+  double restAngle = 0.0;       // the angle it was added with (radians)
 };
 
 class PackingSimulation {
@@ -59,9 +62,15 @@ class PackingSimulation {
   // only, so such a corner could poke into a mesh between two of its vertices. A corner found
   // inside a mesh pushes the mesh's nearest skin segment off it along `inward` and blocks the
   // mesh's growth. Computed by `reflexCorners`.
-  struct Corner { Vec2 position; Vec2 inward; };
+  struct Corner { Vec2 position; Vec2 inward; int container = -1; };  // -1: acts on every mesh
   void setContainerCorners(std::vector<Corner> corners) { corners_ = std::move(corners); }
   static std::vector<Corner> reflexCorners(const Region& container);
+  // Several separate containers: each mesh is kept inside parts[mesh.container] (and out of
+  // its holes) instead of the constructor's region. The indexes must outlive the simulation.
+  void setContainerParts(std::vector<const RegionIndex*> parts) { parts_ = std::move(parts); }
+  // Torsion (eq. 4.6) toward the field's angle at each mesh's current centre instead of the
+  // angle it was added with. Call before `finalize`.
+  void setOrientationField(const OrientationRamp& ramp) { orientationRamp_ = ramp; }
   // Docking springs (shape matching, thesis 4.7): each pulls one vertex toward its anchor with
   // force strength × (anchor − x), holding a matched element at its container corner.
   struct Dock { int vertex; Vec2 anchor; };
@@ -140,6 +149,9 @@ class PackingSimulation {
   std::vector<Vec2> meshCentre_;
   std::vector<std::uint8_t> meshOnCorner_;  // a container corner is inside this mesh
   std::vector<Corner> corners_;
+  std::vector<const RegionIndex*> parts_;  // empty: every mesh in `container_`
+  OrientationRamp orientationRamp_;
+  std::vector<Vec2> meshTorsionTurn_;      // (cos, sin) from the added angle to the field's
   std::vector<Dock> docks_;
   double dockStrength_ = 0.0;
   SegmentGrid grid_;

@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 
+#include "containers.hpp"
 #include "corner_docking.hpp"
 #include "packing_simulation.hpp"
 #include "pak/clipping.hpp"
@@ -72,6 +73,12 @@ void checkOptions(const RepulsionOptions& o) {
   if (o.secondaryResolution < 16 || o.secondaryResolution > 8000)
     throw InputError("", "secondary resolution must be between 16 and 8000 cells");
   positive(o.secondaryTargetFill, "secondary target fill");
+  if (o.orientationField.axis != 'x' && o.orientationField.axis != 'y')
+    throw InputError("", "orientation field axis must be x or y");
+  if (!std::isfinite(o.orientationField.fromDegrees) || !std::isfinite(o.orientationField.toDegrees))
+    throw InputError("", "orientation field angles must be finite");
+  if (!(o.orientationTorsion >= 0.0) || !std::isfinite(o.orientationTorsion))
+    throw InputError("", "orientation torsion must be a non-negative number");
   for (double k : {o.repulsionStrength, o.overlapStrength, o.boundaryStrength, o.edgeStrength,
                    o.negativeSpaceStrength, o.torsionStrength, o.soft, o.growthRate, o.stallEpsilon})
     if (!(k >= 0.0) || !std::isfinite(k)) throw InputError("", "force strengths and rates must be non-negative numbers");
@@ -128,7 +135,7 @@ std::vector<PreparedElement> prepareLibrary(const Library& library, double nomin
 
 // Skins of the seeded meshes at growth g: overlap-free and inside the container?
 bool seedingIsClear(const std::vector<PreparedElement>& types, const std::vector<Seed>& seeds, double g,
-                    const RegionIndex& container, Vec2 period = {}) {
+                    const std::vector<const RegionIndex*>& containers, Vec2 period = {}) {
   std::vector<Region> skins;
   std::vector<Box> boxes;
   for (const Seed& s : seeds) {
@@ -136,7 +143,7 @@ bool seedingIsClear(const std::vector<PreparedElement>& types, const std::vector
     Ring ring;
     for (int k = 0; k < mesh.boundaryCount; ++k) {
       Vec2 p = s.position + rotated(mesh.mesh.vertices[k] - mesh.restCentroid, s.angle) * g;
-      if (!isTiled(period) && !container.query(p, false).inside) return false;  // a tile has no walls
+      if (!isTiled(period) && !containers[s.container]->query(p, false).inside) return false;  // a tile has no walls
       ring.push_back(p);
     }
     boxes.push_back(bounds(ring));
@@ -166,6 +173,7 @@ Packing collectPacking(const PackingSimulation& sim, const std::vector<PreparedE
     placed.libraryIndex = mesh.type;
     placed.source = type.source;
     placed.growth = mesh.growth;
+    placed.container = mesh.container;
     placed.art = type.art;
     std::size_t k = 0;
     for (Shape& shape : placed.art) {
@@ -283,7 +291,7 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Library&
   // Fixed elements: obstacles. Their art, offset by gap/2 as a skin is, is cut out of the
   // container, so the boundary force (eq. 4.5) and the reflex-corner push keep elements off
   // them; the area they block counts as filled.
-  Region fixedArt;
+  Region fixedArt, obstacles;
   double blockedArea = 0.0;
   if (!scene.fixed.empty()) {
     const ClipOptions clip{1e-7 * std::max(box.width(), box.height())};
@@ -292,7 +300,8 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Library&
     const Region fixedAll = unite(painted, clip);
     fixedArt = intersect(fixedAll, scene.container, clip);
     const double fullArea = area(container);
-    container = subtract(container, offset(transformed(fixedAll, frame.scale, -box.min * frame.scale), 0.5 * options.gap));
+    obstacles = offset(transformed(fixedAll, frame.scale, -box.min * frame.scale), 0.5 * options.gap);
+    container = subtract(container, obstacles);
     normalizeOrientation(container);
     blockedArea = fullArea - area(container);
     if (!(area(container) > 0.0)) throw InputError(scene.source, "the fixed elements cover the whole container");
@@ -303,15 +312,40 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Library&
   const double spacing = options.meshSpacing > 0.0 ? options.meshSpacing
                                                    : std::max(options.gap, std::sqrt(nominalSkinArea) / 10.0);
   RegionIndex containerIndex(container, std::max(spacing, 5.0));
-  std::vector<PreparedElement> types = prepareLibrary(library, nominalSkinArea, spacing, options);
 
-  SeedingOptions seeding;
-  seeding.count = count;
-  seeding.types = static_cast<int>(types.size());
-  seeding.seed = options.seed;
-  seeding.period = isTiled(options.tile) ? options.tile * frame.scale : Vec2{};
-  std::vector<Seed> seeds = seedElements(container, containerIndex, seeding);
+  // Separate containers (several regions, a previous packing's elements), each with its own
+  // library or the run's; their libraries together are the element types.
+  const SceneContainers containers = sceneContainers(scene, library);
+  const std::vector<Region>& partsInput = containers.regions;
+  std::vector<PreparedElement> types = prepareLibrary(containers.combined.empty() ? library : containers.combined,
+                                                      nominalSkinArea, spacing, options);
+  std::vector<Region> parts;
+  std::vector<double> partAreas;
+  for (const Region& input : partsInput) {
+    parts.push_back(transformed(input, frame.scale, -box.min * frame.scale));
+    if (!obstacles.empty()) parts.back() = subtract(parts.back(), obstacles);
+    normalizeOrientation(parts.back());
+    partAreas.push_back(area(parts.back()));
+  }
+  std::vector<RegionIndex> partIndexes;  // one per container when there are several
+  partIndexes.reserve(parts.size());
+  std::vector<const RegionIndex*> partIndex;
+  std::vector<ContainerSeeding> partSeeding;
+  const std::vector<int> partCounts = seedsPerContainer(partAreas, count, 0.5 * nominalSkinArea);
+  for (std::size_t c = 0; c < parts.size(); ++c) {
+    if (parts.size() > 1) partIndexes.emplace_back(parts[c], std::max(spacing, 5.0));
+    partIndex.push_back(parts.size() > 1 ? &partIndexes.back() : &containerIndex);
+    partSeeding.push_back({&parts[c], partIndex[c], partCounts[c], containers.typesOf[c]});
+  }
+  const Vec2 period = isTiled(options.tile) ? options.tile * frame.scale : Vec2{};
+  std::vector<Seed> seeds = seedContainers(partSeeding, options.seed, period);
   if (seeds.empty()) throw InputError(scene.source, "container too small to seed any element");
+  // Preferred orientation: seeded at the angle the torsion will hold (eq. 4.6).
+  const OrientationRamp ramp = options.orientation == OrientationMode::Field
+                                   ? OrientationRamp::over(options.orientationField, bounds(container).min, bounds(container).max)
+                                   : OrientationRamp{};
+  if (options.orientation != OrientationMode::Random)
+    for (Seed& s : seeds) s.angle = ramp.active ? ramp.angleAt(s.position) : 0.0;
   // Shape matching (4.7): elements that fit the salient corners take the nearest seeds.
   std::optional<CornerDocking> docking;
   const auto matchingStart = std::chrono::steady_clock::now();
@@ -327,10 +361,17 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Library&
   double seededSkin = 0.0;
   for (const Seed& s : seeds) seededSkin += types[s.type].mesh.skinArea;
   double g0 = std::sqrt(options.initialCoverage * containerArea / seededSkin);
-  if (docking) docking->position(g0, containerIndex, seeds);
-  for (int attempt = 0; attempt < 30 && !seedingIsClear(types, seeds, g0, containerIndex, seeding.period); ++attempt) {
+  // A docked seed may have moved to another container's corner: it belongs where it now is.
+  auto reassignContainers = [&] {
+    if (parts.size() > 1)
+      for (Seed& s : seeds)
+        for (std::size_t c = 0; c < parts.size(); ++c)
+          if (partIndex[c]->query(s.position, false).inside) { s.container = static_cast<int>(c); break; }
+  };
+  if (docking) { docking->position(g0, containerIndex, seeds); reassignContainers(); }
+  for (int attempt = 0; attempt < 30 && !seedingIsClear(types, seeds, g0, partIndex, period); ++attempt) {
     g0 *= 0.9;
-    if (docking) docking->position(g0, containerIndex, seeds);
+    if (docking) { docking->position(g0, containerIndex, seeds); reassignContainers(); }
   }
 
   SimulationParameters parameters;
@@ -340,6 +381,8 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Library&
   parameters.edgeStrength = options.edgeStrength;
   parameters.negativeSpaceStrength = options.negativeSpaceStrength;
   parameters.torsionStrength = options.torsionStrength;
+  if (options.orientation != OrientationMode::Random && options.torsionStrength == 0.0)
+    parameters.torsionStrength = options.orientationTorsion;
   parameters.soft = options.soft;
   parameters.timeStep = options.timeStep;
   parameters.velocityCap = options.velocityCap;
@@ -348,12 +391,24 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Library&
   parameters.outsideTolerance = options.outsideTolerance;
   parameters.cellSize = options.cellSize > 0.0 ? options.cellSize : 2.0 * spacing;
   parameters.occupiedArea = blockedArea;
-  parameters.period = seeding.period;
+  parameters.period = period;
 
   ThreadPool pool(options.threads);
   PackingSimulation sim(containerIndex, containerArea + blockedArea, parameters, pool);
-  for (const Seed& s : seeds) sim.addMesh(types[s.type].mesh, s.type, s.position, s.angle, g0);
-  sim.setContainerCorners(PackingSimulation::reflexCorners(container));
+  for (const Seed& s : seeds) sim.meshes()[sim.addMesh(types[s.type].mesh, s.type, s.position, s.angle, g0)].container = s.container;
+  if (parts.size() > 1) {
+    std::vector<PackingSimulation::Corner> corners;
+    for (std::size_t c = 0; c < parts.size(); ++c)
+      for (PackingSimulation::Corner corner : PackingSimulation::reflexCorners(parts[c])) {
+        corner.container = static_cast<int>(c);
+        corners.push_back(corner);
+      }
+    sim.setContainerCorners(std::move(corners));
+    sim.setContainerParts(partIndex);
+  } else {
+    sim.setContainerCorners(PackingSimulation::reflexCorners(container));
+  }
+  if (ramp.active) sim.setOrientationField(ramp);
   if (docking) sim.setDocks(docking->docks(sim), options.dockingStrength);
   Box area = bounds(container);
   Vec2 margin{0.1 * kCanonicalSide, 0.1 * kCanonicalSide};
@@ -366,6 +421,7 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Library&
   });
   Packing packing = collectPacking(sim, types, frame, scene.container);
   packing.stopReason = reason;
+  packing.containers = partsInput;
   if (docking) {
     for (const SalientCorner& c : docking->match().corners) packing.salientCorners.push_back(frame.toInput(c.position));
     packing.dockedElements = docking->dockedCount();
@@ -402,6 +458,7 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Library&
     PackingSimulation second(containerIndex, containerArea + blockedArea, parameters, pool);
     for (const MeshInstance& m : sim.meshes()) {
       const int id = second.addMesh(allTypes[m.type].mesh, m.type, {}, 0.0, m.growth, true);
+      second.meshes()[id].container = m.container;
       std::copy(sim.positions().begin() + m.vertexBegin, sim.positions().begin() + m.vertexBegin + m.vertexCount,
                 second.positions().begin() + second.meshes()[id].vertexBegin);
     }
@@ -411,9 +468,23 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Library&
       const int type = firstSecondary + static_cast<int>(rng.below(static_cast<std::uint64_t>(secondaryTypes)));
       const double angle = rng.uniform(0.0, 2.0 * 3.14159265358979323846);
       const double g = std::min(1.0, 0.9 * pocket.radius / maxRestRadius(allTypes[type].mesh));
-      second.addMesh(allTypes[type].mesh, type, pocket.position, angle, g);
+      const int id = second.addMesh(allTypes[type].mesh, type, pocket.position, angle, g);
+      for (std::size_t c = 0; parts.size() > 1 && c < parts.size(); ++c)
+        if (partIndex[c]->query(pocket.position, false).inside) { second.meshes()[id].container = static_cast<int>(c); break; }
     }
-    second.setContainerCorners(PackingSimulation::reflexCorners(container));
+    if (parts.size() > 1) {
+      std::vector<PackingSimulation::Corner> corners;
+      for (std::size_t c = 0; c < parts.size(); ++c)
+        for (PackingSimulation::Corner corner : PackingSimulation::reflexCorners(parts[c])) {
+          corner.container = static_cast<int>(c);
+          corners.push_back(corner);
+        }
+      second.setContainerCorners(std::move(corners));
+      second.setContainerParts(partIndex);
+    } else {
+      second.setContainerCorners(PackingSimulation::reflexCorners(container));
+    }
+    if (ramp.active) second.setOrientationField(ramp);
     second.finalize(area);
     const int primaryIterations = sim.iteration();
     auto collect = [&] {

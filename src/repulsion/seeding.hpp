@@ -13,6 +13,7 @@ struct Seed {
   Vec2 position;
   double angle = 0.0;  // radians
   int type = 0;        // library index
+  int container = 0;   // which separate container it is in (see containers.hpp)
 };
 
 struct SeedingOptions {
