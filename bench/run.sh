@@ -72,3 +72,10 @@ for entry in "${scenes[@]}"; do
   wall=$(python3 -c 'import statistics,sys; print(f"{statistics.median(float(w) for w in sys.argv[1:]):.3f}")' "${walls[@]}")
   echo "$stamp,$commit,$name,$elements,100,1000,$wall" | tee -a "$mcsv"
 done
+
+# The issue-5 features: each script appends its own CSV (bench/*-results.csv) and prints it.
+for extra in secondary.sh tiling.sh shape_matching.sh containers-orientation.sh; do
+  echo
+  echo "== bench/$extra"
+  ./bench/"$extra" "$build"
+done
