@@ -396,19 +396,23 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Library&
   ThreadPool pool(options.threads);
   PackingSimulation sim(containerIndex, containerArea + blockedArea, parameters, pool);
   for (const Seed& s : seeds) sim.meshes()[sim.addMesh(types[s.type].mesh, s.type, s.position, s.angle, g0)].container = s.container;
-  if (parts.size() > 1) {
-    std::vector<PackingSimulation::Corner> corners;
-    for (std::size_t c = 0; c < parts.size(); ++c)
-      for (PackingSimulation::Corner corner : PackingSimulation::reflexCorners(parts[c])) {
-        corner.container = static_cast<int>(c);
-        corners.push_back(corner);
-      }
-    sim.setContainerCorners(std::move(corners));
-    sim.setContainerParts(partIndex);
-  } else {
-    sim.setContainerCorners(PackingSimulation::reflexCorners(container));
-  }
-  if (ramp.active) sim.setOrientationField(ramp);
+  // Both passes see the same containers (one boundary each), reflex corners and orientation.
+  auto setUpContainers = [&](PackingSimulation& simulation) {
+    if (parts.size() > 1) {
+      std::vector<PackingSimulation::Corner> corners;
+      for (std::size_t c = 0; c < parts.size(); ++c)
+        for (PackingSimulation::Corner corner : PackingSimulation::reflexCorners(parts[c])) {
+          corner.container = static_cast<int>(c);
+          corners.push_back(corner);
+        }
+      simulation.setContainerCorners(std::move(corners));
+      simulation.setContainerParts(partIndex);
+    } else {
+      simulation.setContainerCorners(PackingSimulation::reflexCorners(container));
+    }
+    if (ramp.active) simulation.setOrientationField(ramp);
+  };
+  setUpContainers(sim);
   if (docking) sim.setDocks(docking->docks(sim), options.dockingStrength);
   Box area = bounds(container);
   Vec2 margin{0.1 * kCanonicalSide, 0.1 * kCanonicalSide};
@@ -472,19 +476,7 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Library&
       for (std::size_t c = 0; parts.size() > 1 && c < parts.size(); ++c)
         if (partIndex[c]->query(pocket.position, false).inside) { second.meshes()[id].container = static_cast<int>(c); break; }
     }
-    if (parts.size() > 1) {
-      std::vector<PackingSimulation::Corner> corners;
-      for (std::size_t c = 0; c < parts.size(); ++c)
-        for (PackingSimulation::Corner corner : PackingSimulation::reflexCorners(parts[c])) {
-          corner.container = static_cast<int>(c);
-          corners.push_back(corner);
-        }
-      second.setContainerCorners(std::move(corners));
-      second.setContainerParts(partIndex);
-    } else {
-      second.setContainerCorners(PackingSimulation::reflexCorners(container));
-    }
-    if (ramp.active) second.setOrientationField(ramp);
+    setUpContainers(second);
     second.finalize(area);
     const int primaryIterations = sim.iteration();
     auto collect = [&] {
