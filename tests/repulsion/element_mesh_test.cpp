@@ -8,6 +8,7 @@
 
 #include "pak/scene_loader.hpp"
 #include "pak/verify.hpp"
+#include "repulsion/mesh_fixtures.hpp"
 
 using namespace pak;
 
@@ -108,22 +109,14 @@ void expectEveryElementMeshes(const Library& library) {
   ASSERT_FALSE(library.empty());
   for (const ElementArt& e : library) {
     double scale = std::sqrt(15000.0 / area(e.outline));
-    Vec2 c = centroid(e.outline);
-    std::vector<Shape> art = e.shapes;
-    for (Shape& s : art)
-      for (Subpath& sub : s.subpaths)
-        for (Vec2& p : sub.points) p = (p - c) * scale;
-    ElementMeshOptions options;
-    options.gap = 10.0;
-    options.spacing = 14.0;
-    ElementMesh m = buildElementMesh(art, transformed(e.outline, scale, -c * scale), options);
+    ElementMesh m = test::centredElementMesh(e, scale, 10.0, 14.0);
     MeshCheck check = verifyMesh(m.mesh);
     EXPECT_TRUE(check.ok) << e.source << ": " << (check.problems.empty() ? "" : check.problems.front());
     EXPECT_GE(m.boundaryCount, 3) << e.source;
     EXPECT_GT(m.skinArea, m.artArea) << e.source;  // the skin encloses the art plus a margin
     EXPECT_EQ(m.bindings.size(), [&] {
       std::size_t n = 0;
-      for (const Shape& s : art)
+      for (const Shape& s : e.shapes)
         for (const Subpath& sub : s.subpaths) n += sub.points.size();
       return n;
     }()) << e.source;

@@ -1,3 +1,4 @@
+#include "repulsion/mesh_fixtures.hpp"
 #include "repulsion/packing_simulation.hpp"
 
 #include <gtest/gtest.h>
@@ -8,18 +9,7 @@ using namespace pak;
 
 namespace {
 
-// A 10 × 10 square mesh centred at the origin: 4 boundary vertices, 2 triangles, 5 springs.
-ElementMesh squareMesh() {
-  ElementMesh m;
-  m.mesh.vertices = {{-5, -5}, {5, -5}, {5, 5}, {-5, 5}};
-  m.mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
-  m.boundaryCount = 4;
-  auto spring = [&](int a, int b) { m.springs.push_back({a, b, distance(m.mesh.vertices[a], m.mesh.vertices[b]), SpringKind::Edge}); };
-  spring(0, 1); spring(1, 2); spring(2, 3); spring(3, 0); spring(0, 2);
-  m.skinArea = 100.0;
-  m.restCentroid = {0, 0};
-  return m;
-}
+using test::squareMesh;
 
 Region box(double size) { return {Polygon{{{0, 0}, {size, 0}, {size, size}, {0, size}}, {}}}; }
 

@@ -9,6 +9,7 @@
 #include "pak/repulsion_presets.hpp"
 #include "pak/rng.hpp"
 #include "pak/scene_loader.hpp"
+#include "repulsion/mesh_fixtures.hpp"
 #include "repulsion/packing_simulation.hpp"
 
 using namespace pak;
@@ -21,15 +22,7 @@ ElementMesh catMesh() {
   const ElementArt& e = library.front();
   Box b = bounds(e.outline);
   double scale = 120.0 / std::max(b.width(), b.height());
-  Vec2 c = centroid(e.outline);
-  std::vector<Shape> art = e.shapes;
-  for (Shape& s : art)
-    for (Subpath& sub : s.subpaths)
-      for (Vec2& p : sub.points) p = (p - c) * scale;
-  ElementMeshOptions options;
-  options.gap = 10.0;
-  options.spacing = 12.0;
-  return buildElementMesh(art, transformed(e.outline, scale, -c * scale), options);
+  return test::centredElementMesh(e, scale, 10.0, 12.0);
 }
 
 // Largest |length / rest − 1| over the mesh's edge springs after `steps` steps from a

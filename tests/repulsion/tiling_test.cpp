@@ -12,6 +12,7 @@
 #include "pak/scene_loader.hpp"
 #include "pak/svg_writer.hpp"
 #include "pak/verify.hpp"
+#include "repulsion/mesh_fixtures.hpp"
 #include "repulsion/packing_simulation.hpp"
 
 using namespace pak;
@@ -24,18 +25,7 @@ Region square(Vec2 min, double side) {
   return {Polygon{{min, {min.x + side, min.y}, {min.x + side, min.y + side}, {min.x, min.y + side}}, {}}};
 }
 
-// A 10 × 10 square mesh centred at the origin: 4 boundary vertices, 2 triangles, 5 springs.
-ElementMesh squareMesh() {
-  ElementMesh m;
-  m.mesh.vertices = {{-5, -5}, {5, -5}, {5, 5}, {-5, 5}};
-  m.mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
-  m.boundaryCount = 4;
-  auto spring = [&](int a, int b) { m.springs.push_back({a, b, distance(m.mesh.vertices[a], m.mesh.vertices[b]), SpringKind::Edge}); };
-  spring(0, 1); spring(1, 2); spring(2, 3); spring(3, 0); spring(0, 2);
-  m.skinArea = 100.0;
-  m.restCentroid = {0, 0};
-  return m;
-}
+using test::squareMesh;
 
 Vec2 meshCentre(const PackingSimulation& sim, int m) {
   const MeshInstance& mesh = sim.meshes()[m];
