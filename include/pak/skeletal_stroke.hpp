@@ -1,0 +1,39 @@
+#pragma once
+// Bending an element along a streamline as a skeletal stroke (thesis 3.3.5, [HLW93]).
+#include <vector>
+
+#include "pak/art.hpp"
+#include "pak/lr_function.hpp"
+#include "pak/polygon.hpp"
+
+namespace pak {
+
+// How an element's frame maps onto a streamline. The element's coordinate along its spine
+// line, from the outline's first to last extent (as in elementLRFunction), maps to the
+// streamline's arclength from start to end; its signed distance from the spine (left
+// positive) is multiplied by `widthScale` and laid along the streamline's left normal.
+struct StrokeFrame {
+  Vec2 spineStart, spineEnd;     // the element's spine line
+  double alongMin = 0.0, alongMax = 1.0;  // the outline's extent along the spine, from spineStart
+  Reflection reflection = Reflection::None;
+  double rotation = 0.0;         // radians, the element turned about its spine's midpoint first
+  double widthScale = 1.0;
+};
+
+// The frame for an element outline: its spine line and its extent along it.
+StrokeFrame strokeFrameFor(const Region& outline, Vec2 spineStart, Vec2 spineEnd);
+
+// Edges are subdivided to at most `maxEdge` (in the element's units, before mapping) so that
+// they follow the curve.
+Ring bendRing(const Ring& ring, const StrokeFrame& frame, const Polyline& streamline, double maxEdge);
+Region bendRegion(const Region& region, const StrokeFrame& frame, const Polyline& streamline, double maxEdge);
+// The element's art with paint kept (stroke widths scaled by the mean of the two scales).
+std::vector<Shape> bendShapes(const std::vector<Shape>& shapes, const StrokeFrame& frame,
+                              const Polyline& streamline, double maxEdge);
+
+// The largest widthScale (at most `maxScale`) for which the bent outline stays inside `blob`,
+// to a relative precision of 1e-3; 0 when even a sliver does not fit.
+double fitWidthScale(const Region& outline, StrokeFrame frame, const Polyline& streamline,
+                     const Region& blob, double maxEdge, double maxScale);
+
+}  // namespace pak
