@@ -1,0 +1,493 @@
+// packFlow: FLOWPAK's pipeline (thesis 3.3): field and streamlines per container, blobs,
+// initial placement, then the iterative refinement of Algorithm 2 over all containers.
+#include "pak/flow.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <numeric>
+
+#include "flow_prototype.hpp"
+#include "pak/blobs.hpp"
+#include "pak/clipping.hpp"
+#include "pak/closest_point.hpp"
+#include "pak/error.hpp"
+#include "pak/resample.hpp"
+#include "pak/streamline_shift.hpp"
+#include "pak/streamlines.hpp"
+#include "repulsion/containers.hpp"
+
+namespace pak {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+// The thesis lets the width grow "as wide as possible"; a cap on how much wider than the
+// length scale an element may become keeps a lone element in a wide blob recognisable.
+constexpr double kMaxWidthOverLengthScale = 2.5;
+
+void validate(const FlowOptions& o) {
+  auto positive = [](double v) { return std::isfinite(v) && v > 0.0; };
+  if (!positive(o.gap)) throw InputError("", "--gap must be a positive number");
+  if (!(o.stopRatio > 0.0 && o.stopRatio <= 1.0)) throw InputError("", "the stop ratio must be in (0, 1]");
+  if (!positive(o.minLength) || !positive(o.maxLength) || o.minLength > o.maxLength)
+    throw InputError("", "--min-length and --max-length must be positive with min ≤ max");
+  if (!positive(o.sampleSpacing)) throw InputError("", "--sample-spacing must be positive");
+  if (o.fieldResolution < 8 || o.fieldResolution > 4096) throw InputError("", "--field-resolution must be 8 to 4096");
+  if (o.blobResolution < 16 || o.blobResolution > 4096) throw InputError("", "--blob-resolution must be 16 to 4096");
+  if (o.lrSamples < 4 || o.lrSamples > 10000) throw InputError("", "--lr-samples must be 4 to 10000");
+  if (!(std::isfinite(o.spacing) && o.spacing >= 0.0)) throw InputError("", "--spacing must be ≥ 0");
+  if (o.iterations < 0 || o.iterations > 10000) throw InputError("", "--iterations must be 0 to 10000");
+  if (!(o.growthTolerance > 0.0 && o.growthTolerance <= 1.0)) throw InputError("", "--growth-tolerance must be in (0, 1]");
+  if (!positive(o.growthLimit)) throw InputError("", "--growth-limit must be positive");
+  if (o.maxRotationDegrees < 0 || o.maxRotationDegrees > 45) throw InputError("", "--max-rotation must be 0 to 45 degrees");
+  if (!(std::isfinite(o.fillGapsInset) && o.fillGapsInset >= 0.0)) throw InputError("", "--fill-gaps-inset must be ≥ 0");
+  if (o.mirrorX && !std::isfinite(*o.mirrorX)) throw InputError("", "--mirror needs a finite x");
+}
+
+Region rectangle(Box b) {
+  return Region{Polygon{Ring{b.min, {b.max.x, b.min.y}, b.max, {b.min.x, b.max.y}}, {}}};
+}
+
+// Whether most of the line's samples lie in the region or within `reach` of its boundary
+// (boundary-following guides run along the container's edge, half in and half out).
+bool mostlyIn(const Polyline& line, const Region& region, double reach, double spacing) {
+  Polyline samples = resamplePolyline(line, spacing);
+  int near = 0;
+  for (Vec2 p : samples)
+    if (pointInRegion(p, region) || closestPointOnBoundary(p, region).distance <= reach) ++near;
+  return 2 * near >= static_cast<int>(samples.size());
+}
+
+// The longest run of the streamline inside `space` (sampled at `step`).
+Polyline longestRunInside(const Polyline& line, const Region& space, double step) {
+  Polyline samples = resamplePolyline(line, step);
+  Polyline best, run;
+  for (Vec2 p : samples) {
+    if (pointInRegion(p, space)) {
+      run.push_back(p);
+      if (run.size() > best.size()) best = run;
+    } else {
+      run.clear();
+    }
+  }
+  return best;
+}
+
+// The polygons of `space` that the streamline's samples fall in most.
+Region partAround(const Region& space, const Polyline& line) {
+  if (space.size() <= 1) return space;
+  std::vector<int> hits(space.size(), 0);
+  for (Vec2 p : line)
+    for (std::size_t k = 0; k < space.size(); ++k)
+      if (pointInPolygon(p, space[k])) ++hits[k];
+  auto best = std::max_element(hits.begin(), hits.end()) - hits.begin();
+  return Region{space[static_cast<std::size_t>(best)]};
+}
+
+struct Placement {
+  bool ok = false;
+  int type = -1;
+  StrokeFrame frame;
+  Polyline streamline;
+  Region outline;
+  double area = 0.0;
+};
+
+class FlowPacker {
+ public:
+  FlowPacker(const Scene& scene, const Library& library, const FlowOptions& options, const FlowCallbacks& callbacks)
+      : scene_(scene), options_(options), callbacks_(callbacks), containers_(sceneContainers(scene, library)),
+        types_(containers_.combined.empty() ? library : containers_.combined) {}
+
+  FlowPacking run();
+
+ private:
+  void setUp();
+  void packContainer(int k);
+  Placement place(const FlowElement& e, const Region& blob, const Polyline& streamline, bool allowRotation) const;
+  Region othersNear(std::size_t i, const Box& box, bool skins) const;
+  Region placementSpace(std::size_t i, const Region& blob) const;
+  void accept(std::size_t i, const Placement& p);
+  void refine();
+  void fillGaps();
+  void mirror();
+  void report(const std::string& phase, int iteration);
+  double totalArea() const;
+
+  const Scene& scene_;
+  FlowOptions options_;
+  const FlowCallbacks& callbacks_;
+  SceneContainers containers_;
+  const Library& types_;
+  std::vector<FlowPrototype> prototypes_;
+  double unit_ = 1.0;  // input units per canonical unit
+  Region freeShrunk_;  // free space inset by spacing / 2: where element art may go
+  std::vector<Region> skins_;  // each element's outline grown by `spacing`
+  FlowPacking packing_;
+};
+
+FlowPacking FlowPacker::run() {
+  setUp();
+  auto t = Clock::now();
+  for (int k = 0; k < static_cast<int>(packing_.containers.size()); ++k) packContainer(k);
+  packing_.areaPerIteration.push_back(totalArea());
+  report("placement", 0);
+  if (callbacks_.onIteration) callbacks_.onIteration(packing_, 0);
+  packing_.seconds.placement += secondsSince(t);
+  t = Clock::now();
+  refine();
+  packing_.seconds.refinement = secondsSince(t);
+  t = Clock::now();
+  if (options_.fillGaps) fillGaps();
+  if (options_.mirrorX) mirror();
+  packing_.seconds.extras = secondsSince(t);
+  return std::move(packing_);
+}
+
+void FlowPacker::setUp() {
+  if (types_.empty()) throw InputError("", "the element library is empty");
+  Box box = bounds(scene_.container);
+  for (const Shape& s : scene_.fixed) box.add(bounds(s));
+  const double lCanvas = std::max(box.width(), box.height());
+  if (!(lCanvas > 0.0)) throw InputError(scene_.source, "the containers have no extent");
+  unit_ = lCanvas / 1000.0;
+  packing_.canonicalScale = 1.0 / unit_;
+  // Distances in input units from here on.
+  for (double* d : {&options_.gap, &options_.minLength, &options_.maxLength, &options_.sampleSpacing,
+                    &options_.spacing, &options_.growthLimit, &options_.fillGapsInset})
+    *d *= unit_;
+
+  std::vector<Region> regions = containers_.regions;
+  if (options_.mirrorX) {
+    Box left = box;
+    left.min -= Vec2{1.0, 1.0} * lCanvas;
+    left.max = {*options_.mirrorX, box.max.y + lCanvas};
+    for (Region& r : regions) r = intersect(r, rectangle(left));
+  }
+  std::vector<Region> fixed;
+  for (const Shape& s : scene_.fixed) fixed.push_back(paintedRegion(s));
+  packing_.fixedArt = unite(fixed);
+  packing_.containers = regions;
+  packing_.container = unite(regions);
+  packing_.freeSpace = subtract(packing_.container, packing_.fixedArt);
+  if (area(packing_.freeSpace) <= 0.0) throw InputError(scene_.source, "the fixed elements leave no free space");
+  freeShrunk_ = options_.spacing > 0.0 ? offset(packing_.freeSpace, -0.5 * options_.spacing) : packing_.freeSpace;
+
+  for (const ElementArt& e : types_) prototypes_.push_back(flowPrototype(e, options_.maxRotationDegrees, options_.lrSamples));
+}
+
+void FlowPacker::report(const std::string& phase, int iteration) {
+  if (!callbacks_.onProgress) return;
+  FlowProgress p;
+  p.phase = phase;
+  p.iteration = iteration;
+  p.iterations = options_.iterations;
+  p.elements = static_cast<int>(packing_.elements.size());
+  p.elementArea = totalArea() / std::max(1e-300, area(packing_.freeSpace));
+  callbacks_.onProgress(p);
+}
+
+double FlowPacker::totalArea() const {
+  double a = 0.0;
+  for (const FlowElement& e : packing_.elements) a += e.area;
+  return a;
+}
+
+void FlowPacker::packContainer(int k) {
+  const Region& region = packing_.containers[static_cast<std::size_t>(k)];
+  if (region.empty()) {  // a container wholly on the mirrored side
+    packing_.fields.emplace_back();
+    return;
+  }
+  const double reach = 2.0 * options_.sampleSpacing;
+  std::vector<Polyline> guides, spines;
+  for (const Polyline& g : scene_.guides)
+    if (mostlyIn(g, region, reach, options_.sampleSpacing)) guides.push_back(g);
+  for (const Polyline& s : scene_.spines)
+    if (mostlyIn(s, region, 0.0, options_.sampleSpacing)) spines.push_back(s);
+  if (guides.empty())
+    throw InputError(scene_.source, "container " + std::to_string(k + 1) +
+                                        " has no direction guide: draw at least one stroke in the `guides` layer over it");
+
+  auto t = Clock::now();
+  report("field", 0);
+  VectorFieldOptions fieldOptions;
+  fieldOptions.sampleSpacing = options_.sampleSpacing;
+  fieldOptions.resolution = options_.fieldResolution;
+  packing_.fields.push_back(buildVectorField(region, guides, fieldOptions));
+  const VectorField& field = packing_.fields.back();
+  packing_.seconds.field += secondsSince(t);
+
+  t = Clock::now();
+  report("streamlines", 0);
+  StreamlineOptions lineOptions;
+  lineOptions.gap = options_.gap;
+  lineOptions.stopRatio = options_.stopRatio;
+  lineOptions.minLength = options_.minLength;
+  lineOptions.maxLength = options_.maxLength;
+  lineOptions.sampleSpacing = options_.sampleSpacing;
+  lineOptions.seed = options_.seed + static_cast<std::uint64_t>(k);
+  StreamlineInput input;
+  input.container = region;
+  input.obstacles = packing_.fixedArt;
+  input.guides = guides;
+  input.fixedStreamlines = spines;
+  std::vector<Polyline> lines = traceStreamlines(field, input, lineOptions);
+  packing_.streamlines.insert(packing_.streamlines.end(), lines.begin(), lines.end());
+  packing_.seconds.streamlines += secondsSince(t);
+
+  t = Clock::now();
+  report("blobs", 0);
+  std::vector<Polyline> all = spines;  // fixed spines first, then the traced ones
+  all.insert(all.end(), lines.begin(), lines.end());
+  BlobOptions blobOptions;
+  blobOptions.resolution = options_.blobResolution;
+  std::vector<Region> blobs = computeBlobs(intersect(region, packing_.freeSpace), all, blobOptions);
+  packing_.seconds.blobs += secondsSince(t);
+
+  t = Clock::now();
+  report("placement", 0);
+  for (std::size_t j = 0; j < all.size(); ++j) {
+    FlowElement e;
+    e.container = k;
+    e.fixedSpine = j < spines.size();
+    e.blob = blobs[j];
+    e.streamline = e.fixedSpine ? all[j] : extendToBlob(all[j], blobs[j], field, 0.5 * options_.sampleSpacing);
+    packing_.elements.push_back(std::move(e));
+    skins_.emplace_back();
+    std::size_t i = packing_.elements.size() - 1;
+    Placement p = place(packing_.elements[i], placementSpace(i, packing_.elements[i].blob),
+                        packing_.elements[i].streamline, false);
+    if (p.ok) {
+      accept(i, p);
+    } else {
+      packing_.elements.pop_back();
+      skins_.pop_back();
+    }
+  }
+  packing_.seconds.placement += secondsSince(t);
+}
+
+// The other elements' outlines (or skins) whose bounds meet `box`, as one region.
+Region FlowPacker::othersNear(std::size_t i, const Box& box, bool skins) const {
+  std::vector<Region> near;
+  for (std::size_t j = 0; j < packing_.elements.size(); ++j) {
+    if (j == i) continue;
+    const Region& r = skins ? skins_[j] : packing_.elements[j].outline;
+    if (!r.empty() && bounds(r).overlaps(box)) near.push_back(r);
+  }
+  return unite(near);
+}
+
+// Where element i's art may go inside `blob`: the inset free space, away from the others by
+// `spacing`.
+Region FlowPacker::placementSpace(std::size_t i, const Region& blob) const {
+  Region space = intersect(blob, freeShrunk_);
+  if (space.empty()) return space;
+  Box box = bounds(space);
+  return subtract(space, othersNear(i, box, true));
+}
+
+// Thesis 3.3.5: the element and reflection whose LR function is closest to the blob's
+// (eq. 3.1), rotations ±1…max° too during refinement, bent along the streamline and made as
+// wide as fits.
+Placement FlowPacker::place(const FlowElement& e, const Region& spaceAll, const Polyline& streamline,
+                            bool allowRotation) const {
+  Placement best;
+  if (spaceAll.empty() || streamline.size() < 2) return best;
+  Region space = partAround(spaceAll, streamline);
+  Polyline spine = e.fixedSpine ? streamline
+                                : extendToBlob(longestRunInside(streamline, space, 0.25 * options_.sampleSpacing), space,
+                                               packing_.fields[static_cast<std::size_t>(e.container)],
+                                               0.25 * options_.sampleSpacing);
+  if (spine.size() < 2 || polylineLength(spine) < 0.25 * options_.minLength) return best;
+  LRFunction blobLR = blobLRFunction(space, spine, options_.lrSamples);
+  const std::vector<int>& types = containers_.typesOf[static_cast<std::size_t>(e.container)];
+  std::vector<LRFunction> candidates;
+  std::vector<std::pair<int, int>> which;  // (type, rotation)
+  for (int type : types) {
+    const FlowPrototype& p = prototypes_[static_cast<std::size_t>(type)];
+    int rotations = allowRotation ? static_cast<int>(p.rotations.size()) : 1;
+    for (int r = 0; r < rotations; ++r) {
+      candidates.push_back(p.lr[static_cast<std::size_t>(r)]);
+      which.emplace_back(type, r);
+    }
+  }
+  LRMatch match = bestMatch(candidates, blobLR);
+  if (match.candidate < 0) return best;
+  auto [type, rotation] = which[static_cast<std::size_t>(match.candidate)];
+  const FlowPrototype& p = prototypes_[static_cast<std::size_t>(type)];
+  StrokeFrame frame = p.frames[static_cast<std::size_t>(rotation)];
+  frame.reflection = match.reflection;
+  const double extent = frame.alongMax - frame.alongMin;
+  const double lengthScale = polylineLength(spine) / extent;
+  const double maxEdge = extent / 100.0;
+  frame.widthScale = fitWidthScale(p.outline, frame, spine, space, maxEdge, kMaxWidthOverLengthScale * lengthScale);
+  if (!(frame.widthScale > 0.0)) return best;
+  best.ok = true;
+  best.type = type;
+  best.frame = frame;
+  best.streamline = spine;
+  best.outline = bendRegion(p.outline, frame, spine, maxEdge);
+  best.area = area(best.outline);
+  return best;
+}
+
+void FlowPacker::accept(std::size_t i, const Placement& p) {
+  FlowElement& e = packing_.elements[i];
+  const FlowPrototype& proto = prototypes_[static_cast<std::size_t>(p.type)];
+  e.libraryIndex = p.type;
+  e.source = proto.art->source;
+  e.frame = p.frame;
+  e.streamline = p.streamline;
+  e.outline = p.outline;
+  e.area = p.area;
+  const double extent = p.frame.alongMax - p.frame.alongMin;
+  e.art = bendShapes(proto.art->shapes, p.frame, p.streamline, extent / 100.0);
+  skins_[i] = options_.spacing > 0.0 ? offset(e.outline, options_.spacing) : e.outline;
+}
+
+// Algorithm 2: each iteration shifts every streamline, then grows every blob, smallest
+// elements first, keeping a new placement when its area is at least α times the old one.
+void FlowPacker::refine() {
+  ShiftOptions shift;
+  shift.limit = options_.growthLimit;
+  shift.fieldWeight = options_.shiftFieldWeight;
+  shift.distanceWeight = options_.shiftDistanceWeight;
+  shift.fieldPower = options_.shiftFieldPower;
+  shift.neighbours = options_.shiftNeighbours;
+  const double step = 0.5 * options_.sampleSpacing;
+  auto smallestFirst = [&] {
+    std::vector<std::size_t> order(packing_.elements.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return packing_.elements[a].area < packing_.elements[b].area; });
+    return order;
+  };
+  auto better = [&](const Placement& p, const FlowElement& e) {
+    return p.ok && p.area >= options_.growthTolerance * e.area;
+  };
+  for (int iteration = 1; iteration <= options_.iterations; ++iteration) {
+    // Shifting streamlines (fixed spines stay where the artist drew them).
+    for (std::size_t i : smallestFirst()) {
+      FlowElement& e = packing_.elements[i];
+      if (e.fixedSpine) continue;
+      const VectorField& field = packing_.fields[static_cast<std::size_t>(e.container)];
+      Box box = bounds(e.blob);
+      box.min -= Vec2{1.0, 1.0} * (options_.gap + options_.growthLimit);
+      box.max += Vec2{1.0, 1.0} * (options_.gap + options_.growthLimit);
+      Region occupied = othersNear(i, box, true);
+      LRFunction widths = blobLRFunction(e.blob, e.streamline, options_.lrSamples);
+      Polyline shifted = shiftStreamline(e.streamline, field, occupied, packing_.freeSpace, widths.maxLeft,
+                                         widths.maxRight, shift);
+      shifted = extendToBlob(shifted, e.blob, field, step);
+      Placement p = place(e, placementSpace(i, e.blob), shifted, true);
+      ++packing_.placementsTried;
+      if (better(p, e)) {
+        accept(i, p);
+        ++packing_.placementsAccepted;
+      }
+    }
+    // Growing blobs: the blob is kept grown whether or not the element is.
+    for (std::size_t i : smallestFirst()) {
+      FlowElement& e = packing_.elements[i];
+      const VectorField& field = packing_.fields[static_cast<std::size_t>(e.container)];
+      Box box = bounds(e.blob);
+      box.min -= Vec2{1.0, 1.0} * (options_.spacing + 2.0 * options_.growthLimit);
+      box.max += Vec2{1.0, 1.0} * (options_.spacing + 2.0 * options_.growthLimit);
+      e.blob = growBlob(e.blob, othersNear(i, box, false), packing_.freeSpace, options_.growthLimit);
+      Polyline extended = e.fixedSpine ? e.streamline : extendToBlob(e.streamline, e.blob, field, step);
+      Placement p = place(e, placementSpace(i, e.blob), extended, true);
+      ++packing_.placementsTried;
+      if (better(p, e)) {
+        accept(i, p);
+        ++packing_.placementsAccepted;
+      }
+    }
+    packing_.iterations = iteration;
+    packing_.areaPerIteration.push_back(totalArea());
+    report("refinement", iteration);
+    if (callbacks_.onIteration) callbacks_.onIteration(packing_, iteration);
+  }
+}
+
+// Figure 3.15: new shapes made from the negative space between the placed elements, inset
+// from them and rounded by an opening so slivers vanish.
+void FlowPacker::fillGaps() {
+  const double inset = options_.fillGapsInset > 0.0 ? options_.fillGapsInset : 0.5 * options_.spacing;
+  std::vector<Region> grown;
+  for (const FlowElement& e : packing_.elements) grown.push_back(offset(e.outline, options_.spacing + inset));
+  Region gaps = subtract(offset(packing_.freeSpace, -(0.5 * options_.spacing + inset)), unite(grown));
+  const double round = 0.5 * options_.gap * 0.25;
+  gaps = offset(offset(gaps, -round), round);
+  const double minimumArea = 0.05 * options_.gap * options_.gap;
+  for (const Polygon& polygon : gaps) {
+    Region piece{polygon};
+    double a = area(piece);
+    if (a < minimumArea) continue;
+    FlowElement e;
+    e.source = "negative-space";
+    e.outline = piece;
+    e.area = a;
+    Shape shape;
+    shape.subpaths.push_back({polygon.outer, true});
+    for (const Ring& h : polygon.holes) shape.subpaths.push_back({h, true});
+    shape.fill = Color{140, 100, 70, 1.0};
+    shape.stroke.reset();
+    e.art.push_back(std::move(shape));
+    packing_.gapElements.push_back(std::move(e));
+  }
+}
+
+// Figure 3.13: the packed half reflected across x = mirrorX.
+void FlowPacker::mirror() {
+  const double m = *options_.mirrorX;
+  auto reflect = [m](Vec2 p) { return Vec2{2.0 * m - p.x, p.y}; };
+  auto reflectRegion = [&](Region r) {
+    for (Polygon& p : r) {
+      for (Vec2& v : p.outer) v = reflect(v);
+      for (Ring& h : p.holes)
+        for (Vec2& v : h) v = reflect(v);
+    }
+    normalizeOrientation(r);
+    return r;
+  };
+  for (auto* list : {&packing_.elements, &packing_.gapElements}) {
+    const std::size_t n = list->size();
+    for (std::size_t i = 0; i < n; ++i) {
+      FlowElement e = (*list)[i];
+      for (Shape& s : e.art)
+        for (Subpath& sub : s.subpaths)
+          for (Vec2& v : sub.points) v = reflect(v);
+      e.outline = reflectRegion(e.outline);
+      e.blob = reflectRegion(e.blob);
+      for (Vec2& v : e.streamline) v = reflect(v);
+      list->push_back(std::move(e));
+    }
+  }
+  // The container as the artist drew it: both halves.
+  packing_.containers = containers_.regions;
+  packing_.container = scene_.container;
+  packing_.freeSpace = subtract(packing_.container, packing_.fixedArt);
+}
+
+}  // namespace
+
+FlowPacking packFlow(const Scene& scene, const Library& library, const FlowOptions& options,
+                     const FlowCallbacks& callbacks) {
+  validate(options);
+  FlowPacker packer(scene, library, options, callbacks);
+  return packer.run();
+}
+
+double flowFill(const FlowPacking& packing) {
+  double a = 0.0;
+  for (const FlowElement& e : packing.elements) a += e.area;
+  for (const FlowElement& e : packing.gapElements) a += e.area;
+  double free = area(packing.freeSpace);
+  return free > 0.0 ? a / free : 0.0;
+}
+
+}  // namespace pak

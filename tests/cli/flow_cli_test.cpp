@@ -1,0 +1,81 @@
+// `pak flow` as a user runs it on the bundled FLOWPAK examples: valid packings, the report's
+// figures, snapshots, debug layers, determinism and one-line errors.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "run_pak.hpp"
+
+using namespace pak::testing;
+
+namespace {
+
+// Small settings so the sanitizer build stays quick.
+const std::string kQuick = " --iterations 2 --field-resolution 96 --blob-resolution 256 --shift-neighbours 40 -q";
+
+TEST(CliFlow, KoiIsPackedWithoutOverlapsAndReported) {
+  ScratchFolder dir("cli-flow-koi");
+  PakRun run = runPak("flow examples/flow/koi.svg -e examples/flow/elements" + kQuick + " -o " +
+                      shellQuoted(dir.file("koi.svg")) + " --report " + shellQuoted(dir.file("koi.json")) +
+                      " --snapshots " + shellQuoted(dir.file("snaps")) + " --debug-layers");
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  auto report = nlohmann::json::parse(readWholeFile(dir.file("koi.json")));
+  EXPECT_GE(report["element-count"].get<int>(), 8);
+  EXPECT_EQ(report["overlap-count"], 0);
+  EXPECT_EQ(report["elements-outside"], 0);
+  EXPECT_EQ(report["iterations"], 2);
+  auto areas = report["element-area-per-iteration"];
+  ASSERT_EQ(areas.size(), 3u);
+  EXPECT_GE(areas[2].get<double>(), areas[0].get<double>());
+  EXPECT_GT(report["fill-ratio-art"].get<double>(), 0.2);
+  // One snapshot after placement and one per iteration.
+  for (const char* name : {"iteration-000.svg", "iteration-001.svg", "iteration-002.svg"})
+    EXPECT_TRUE(std::filesystem::exists(dir.path() / "snaps" / name)) << name;
+  std::string svg = readWholeFile(dir.file("koi.svg"));
+  for (const char* layer : {"id=\"container\"", "id=\"elements\"", "id=\"field\"", "id=\"streamlines\"", "id=\"blobs\""})
+    EXPECT_NE(svg.find(layer), std::string::npos) << layer;
+  // Colours of the library are kept.
+  EXPECT_NE(svg.find("#c8553d"), std::string::npos);
+}
+
+TEST(CliFlow, MedallionKeepsItsFixedSunAndFixedSpinesAndIsDeterministic) {
+  ScratchFolder dir("cli-flow-medallion");
+  std::string common = "flow examples/flow/medallion.svg -e examples/flow/elements" + kQuick + " --seed 3";
+  PakRun a = runPak(common + " -o " + shellQuoted(dir.file("a.svg")) + " --report " + shellQuoted(dir.file("a.json")));
+  PakRun b = runPak(common + " -o " + shellQuoted(dir.file("b.svg")));
+  ASSERT_EQ(a.exitCode, 0) << a.err;
+  ASSERT_EQ(b.exitCode, 0) << b.err;
+  EXPECT_EQ(readWholeFile(dir.file("a.svg")), readWholeFile(dir.file("b.svg")));
+  auto report = nlohmann::json::parse(readWholeFile(dir.file("a.json")));
+  EXPECT_EQ(report["overlap-count"], 0);  // the fixed sun counts as an element here
+  EXPECT_EQ(report["elements-outside"], 0);
+  EXPECT_GE(report["element-count"].get<int>(), 8);
+  std::string svg = readWholeFile(dir.file("a.svg"));
+  EXPECT_NE(svg.find("id=\"fixed\""), std::string::npos);
+  EXPECT_NE(svg.find("#f2b632"), std::string::npos);  // the sun's colour
+}
+
+TEST(CliFlow, BadInputIsOneErrorLineAndExitTwo) {
+  ScratchFolder dir("cli-flow-bad");
+  std::string out = shellQuoted(dir.file("o.svg"));
+  std::string noGuides = dir.write(
+      "scene.svg", R"(<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 100 100"><g id="container">)"
+                   R"(<rect width="100" height="100"/></g></svg>)");
+  std::string badConfig = dir.write("c.json", R"({"iterations": "many"})");
+  for (const std::string& args :
+       {"flow " + shellQuoted(noGuides) + " -e examples/flow/elements -o " + out,
+        "flow examples/flow/koi.svg -e examples/flow/elements -o " + out + " --mirror y=3",
+        "flow examples/flow/koi.svg -e examples/flow/elements -o " + out + " --gap -4",
+        "flow examples/flow/koi.svg -e examples/flow/elements -o " + out + " --min-length 500 --max-length 100",
+        "flow examples/flow/koi.svg -e examples/flow/elements -o " + out + " --config " + shellQuoted(badConfig),
+        "flow examples/flow/koi.svg -e no-such-folder -o " + out}) {
+    PakRun run = runPak(args);
+    EXPECT_EQ(run.exitCode, 2) << args << "\n" << run.err;
+    ASSERT_EQ(run.errLines().size(), 1u) << args << "\n" << run.err;
+    EXPECT_EQ(run.errLines()[0].rfind("pak: error: ", 0), 0u) << run.err;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("o.svg"))) << args;
+  }
+}
+
+}  // namespace
