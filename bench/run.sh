@@ -3,27 +3,19 @@
 # thread count; one CSV row per scene and thread count with the median wall time, appended to
 # bench/results.csv and printed. Iteration counts are exact (a seed reproduces a run).
 set -euo pipefail
-build=${1:-build/release}
-runs=${BENCH_RUNS:-3}
-pak="$build/pak"
-data=../shared/data
-work=out/bench
-mkdir -p "$work"
+source "$(dirname "$0")/common.sh"
 csv=bench/results.csv
 header="date,commit,scene,threads,elements,vertices,iterations,wall_s_median,simulation_s_median,s_per_1000_iterations,fill_art,fill_skin,overlaps,peak_rss_mb"
-[ -f "$csv" ] || echo "$header" > "$csv"
-commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
-stamp=$(date -u +%Y-%m-%dT%H:%M:%SZ)
 
 scenes=("example|--container examples/scene.svg --elements examples/elements")
-if [ -d "$data" ]; then
+if [ -d "$data/repulsionpak" ]; then
   scenes+=("animals-heart|--container $data/repulsionpak/containers/heart.path --elements $data/repulsionpak/animals --count 27")
   scenes+=("mdi-heart|--container $data/mdi/heart.svg --elements $data/mdi/cat.svg $data/mdi/dog.svg $data/mdi/rabbit.svg $data/mdi/bird.svg $data/mdi/fish.svg $data/mdi/penguin.svg $data/mdi/turtle.svg $data/mdi/snail.svg")
 else
   echo "bench: $data not found; running the bundled example only" >&2
 fi
 
-echo "$header"
+bench_csv "$csv" "$header"
 for entry in "${scenes[@]}"; do
   name=${entry%%|*}
   args=${entry#*|}
@@ -58,8 +50,7 @@ done
 # Metrics: all three curves (100 radii, 1000 × 1000 grid) of each packing written above.
 mcsv=bench/metrics-results.csv
 mheader="date,commit,packing,elements,radii,grid,wall_s_median"
-[ -f "$mcsv" ] || echo "$mheader" > "$mcsv"
-echo "$mheader"
+bench_csv "$mcsv" "$mheader"
 for entry in "${scenes[@]}"; do
   name=${entry%%|*}
   walls=()
@@ -73,8 +64,8 @@ for entry in "${scenes[@]}"; do
   echo "$stamp,$commit,$name,$elements,100,1000,$wall" | tee -a "$mcsv"
 done
 
-# The issue-5 features: each script appends its own CSV (bench/*-results.csv) and prints it.
-for extra in secondary.sh tiling.sh shape_matching.sh containers-orientation.sh; do
+# The issue-5 features and FLOWPAK: each script appends its own CSV (bench/*-results.csv) and prints it.
+for extra in secondary.sh tiling.sh shape_matching.sh containers-orientation.sh flow.sh; do
   echo
   echo "== bench/$extra"
   ./bench/"$extra" "$build"

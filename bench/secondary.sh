@@ -5,26 +5,18 @@
 # after each pass (a seed reproduces a run, so iterations and fills are exact).
 # Target (issue 5): total ≤ 8 s on the project machine, the secondary pass raising the fill.
 set -euo pipefail
-build=${1:-build/release}
-runs=${BENCH_RUNS:-3}
-pak="$build/pak"
-data=../shared/data
-work=out/bench
-mkdir -p "$work"
+source "$(dirname "$0")/common.sh"
 if [ ! -d "$data/repulsionpak/small_cat" ]; then
   echo "bench/secondary.sh: $data/repulsionpak not found; skipped" >&2
   exit 0
 fi
 csv=bench/secondary-results.csv
 header="date,commit,scene,threads,primaries,secondaries,iterations_primary,iterations_secondary,primary_s_median,secondary_s_median,wall_s_median,fill_art_primary,fill_art_final,fill_skin_primary,fill_skin_final,overlaps"
-[ -f "$csv" ] || echo "$header" > "$csv"
-commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
-stamp=$(date -u +%Y-%m-%dT%H:%M:%SZ)
 name=animals-heart-secondary
 args="--container $data/repulsionpak/containers/heart.path --elements $data/repulsionpak/animals --count 27
       --secondary $data/repulsionpak/small_cat"
 
-echo "$header"
+bench_csv "$csv" "$header"
 for threads in 1 2; do
   reports=()
   for run in $(seq "$runs"); do

@@ -4,19 +4,10 @@
 # iterations (exact: a seed reproduces a run), the fill ratios over the tile's area and the
 # overlaps found on the torus (seams included). Rows go to bench/tiling-results.csv.
 set -euo pipefail
-build=${1:-build/release}
-runs=${BENCH_RUNS:-3}
+source "$(dirname "$0")/common.sh"
 threads=${BENCH_THREADS:-2}
-pak="$build/pak"
-data=../shared/data
-[ -d "$data" ] || data=/work/shared/data
-work=out/bench
-mkdir -p "$work"
 csv=bench/tiling-results.csv
 header="date,commit,scene,threads,elements,vertices,iterations,wall_s_median,simulation_s_median,fill_art,fill_skin,overlaps"
-[ -f "$csv" ] || echo "$header" > "$csv"
-commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
-stamp=$(date -u +%Y-%m-%dT%H:%M:%SZ)
 
 scenes=("example-tile|--tile 1000,1000 --elements examples/elements --count 20 --seed 7")
 if [ -d "$data/repulsionpak/animals" ]; then
@@ -25,7 +16,7 @@ else
   echo "bench: $data not found; running the bundled example only" >&2
 fi
 
-echo "$header"
+bench_csv "$csv" "$header"
 for entry in "${scenes[@]}"; do
   name=${entry%%|*}
   args=${entry#*|}
