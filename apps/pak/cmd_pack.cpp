@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <limits>
+#include <set>
 #include <nlohmann/json.hpp>
 #include <thread>
 
@@ -89,6 +90,7 @@ struct PackArguments {
   std::uint64_t seed = 1;
   std::string orientation = "random", orientationField = "x:0:180", containerLayer = "container";
   RepulsionOptions options;
+  std::set<std::string> configKeys;  // the options the --config file set
   CLI::App* command = nullptr;
 };
 
@@ -104,7 +106,8 @@ void applyConfig(PackArguments& args) {
   if (!json.is_object()) throw InputError(args.config, "expected a JSON object of option names to values");
   for (auto& [key, value] : json.items()) {
     bool isOption = key == "seed" || key == "stall-on-measured-area" || key == "shape-matching" ||
-                    key == "orientation" || key == "orientation-field" || key == "container-layer";
+                    key == "orientation" || key == "orientation-field" || key == "container-layer" ||
+                    key == "tile" || key == "preset" || key == "rigid";
     for (const auto& o : kNumberOptions) isOption |= key == o.name;
     for (const auto& o : kIntegerOptions) isOption |= key == o.name;
     if (!isOption) throw InputError(args.config, "unknown option \"" + key + "\"");
@@ -133,10 +136,20 @@ void applyConfig(PackArguments& args) {
       args.options.shapeMatching = value.get<bool>();
       known = true;
     }
-    if (key == "orientation" || key == "orientation-field" || key == "container-layer") {
+    if (key == "orientation" || key == "orientation-field" || key == "container-layer" || key == "tile" ||
+        key == "preset") {
       if (!value.is_string()) throw InputError(args.config, "\"" + key + "\" must be a string");
-      (key == "orientation" ? args.orientation : key == "orientation-field" ? args.orientationField : args.containerLayer) =
-          value.get<std::string>();
+      std::string& target = key == "orientation"         ? args.orientation
+                            : key == "orientation-field" ? args.orientationField
+                            : key == "container-layer"   ? args.containerLayer
+                            : key == "tile"              ? args.tile
+                                                         : args.preset;
+      target = value.get<std::string>();
+      known = true;
+    }
+    if (key == "rigid") {
+      if (!value.is_boolean()) throw InputError(args.config, "\"rigid\" must be true or false");
+      args.rigid = value.get<bool>();
       known = true;
     }
     if (key == "seed") {
@@ -145,6 +158,7 @@ void applyConfig(PackArguments& args) {
       known = true;
     }
     if (!known) throw InputError(args.config, "unknown option \"" + key + "\"");
+    args.configKeys.insert(key);
   }
 }
 
@@ -167,19 +181,23 @@ std::string formatSeconds(double s) {
 int runPack(PackArguments& args) {
   using Clock = std::chrono::steady_clock;
   auto start = Clock::now();
-  // Preset strengths first; the config file and then command-line flags override them.
+  // The config file may name the preset, so it is read first; the preset then sets the
+  // strengths that neither the file nor a command-line flag gives.
+  if (!args.config.empty()) applyConfig(args);
   if (args.rigid && !args.preset.empty() && args.preset != "rigid")
     throw InputError("", "--rigid conflicts with --preset " + args.preset);
   if (args.rigid) args.preset = "rigid";
   if (!args.preset.empty()) {
     RepulsionOptions preset = args.options;
     applyRepulsionPreset(args.preset, preset);
+    auto given = [&](const char* name) {
+      return args.command->count(std::string("--") + name) > 0 || args.configKeys.count(name) > 0;
+    };
     for (const auto& o : kNumberOptions)
-      if (args.command->count(std::string("--") + o.name) == 0) args.options.*o.field = preset.*o.field;
+      if (!given(o.name)) args.options.*o.field = preset.*o.field;
     for (const auto& o : kIntegerOptions)
-      if (args.command->count(std::string("--") + o.name) == 0) args.options.*o.field = preset.*o.field;
+      if (!given(o.name)) args.options.*o.field = preset.*o.field;
   }
-  if (!args.config.empty()) applyConfig(args);
   args.options.seed = args.seed;
   // A field given alone asks for the field.
   if (args.command->count("--orientation-field") > 0 && args.command->count("--orientation") == 0 &&

@@ -65,6 +65,23 @@ TEST(CliPack, ConfigFileSetsOptionsAndFlagsWin) {
   EXPECT_EQ(report["element-count"], 3);
 }
 
+TEST(CliPack, ConfigFileMayNameThePresetAndTheTile) {
+  ScratchFolder dir("cli-pack-config-preset");
+  // The file's preset sets the strengths the file does not give; the file's own value wins.
+  std::string config = dir.write("c.json", R"({"preset": "rigid", "k-edge": 700, "tile": "300,200", "count": 3,
+                                             "max-iterations": 10})");
+  PakRun run = runPak("pack -e examples/elements/star.svg -q --config " + shellQuoted(config) + " -o " +
+                      shellQuoted(dir.file("o.svg")) + " --report " + shellQuoted(dir.file("r.json")));
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  auto report = nlohmann::json::parse(readWholeFile(dir.file("r.json")));
+  EXPECT_EQ(report["preset"], "rigid");
+  EXPECT_EQ(report["parameters"]["k-edge"], 700.0);
+  EXPECT_EQ(report["parameters"]["time-step"], 0.04);  // from the rigid preset
+  ASSERT_TRUE(report.contains("tile"));
+  EXPECT_EQ(report["tile"][0], 300.0);
+  EXPECT_EQ(report["tile"][1], 200.0);
+}
+
 TEST(CliPack, BadOptionsAreOneClearErrorLine) {
   ScratchFolder dir("cli-pack-bad");
   std::string out = shellQuoted(dir.file("o.svg"));
