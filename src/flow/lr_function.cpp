@@ -29,31 +29,38 @@ void checkSamples(int samples, const char* where) {
   if (samples < 1) throw InputError(where, "the number of samples must be at least 1, got " + std::to_string(samples));
 }
 
-// Distance t > 0 along the unit ray origin + t*direction to its first crossing of segment ab,
-// or +infinity.
-double rayHit(Vec2 origin, Vec2 direction, Vec2 a, Vec2 b) {
-  Vec2 e = b - a;
-  double denominator = cross(direction, e);
-  if (denominator == 0.0) return std::numeric_limits<double>::infinity();  // parallel
-  Vec2 w = a - origin;
-  double t = cross(w, e) / denominator;          // along the ray
-  double u = cross(w, direction) / denominator;  // along the segment
-  if (t <= 0.0 || u < 0.0 || u > 1.0) return std::numeric_limits<double>::infinity();
-  return t;
-}
-
-double firstBoundaryHit(Vec2 origin, Vec2 direction, const Region& region) {
-  double best = std::numeric_limits<double>::infinity();
+// Where the line through `origin` along the unit `direction` first meets the region's
+// boundary on either side, in one pass over the edges. Crossings on the forward side also
+// give the even-odd inside test (the same half-open rule as pointInRing), so a point outside
+// the region has no extents.
+struct LineHits {
+  double forward = 0.0, backward = 0.0;
+};
+LineHits boundaryAlongLine(Vec2 origin, Vec2 direction, const Region& region) {
+  double forward = std::numeric_limits<double>::infinity(), backward = forward;
+  int forwardCrossings = 0;
   auto scan = [&](const Ring& ring) {
-    for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++)
-      best = std::min(best, rayHit(origin, direction, ring[j], ring[i]));
+    for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
+      Vec2 a = ring[j], b = ring[i];
+      double sa = cross(direction, a - origin), sb = cross(direction, b - origin);
+      if ((sa > 0.0) == (sb > 0.0)) continue;  // the edge stays on one side of the line
+      Vec2 x = a + (sa / (sa - sb)) * (b - a);
+      double t = dot(x - origin, direction);
+      if (t > 0.0) {
+        ++forwardCrossings;
+        forward = std::min(forward, t);
+      } else if (t < 0.0) {
+        backward = std::min(backward, -t);
+      }
+    }
   };
   for (const Polygon& polygon : region) {
-    if (!polygon.outer.empty()) scan(polygon.outer);
+    if (polygon.outer.size() >= 3) scan(polygon.outer);
     for (const Ring& hole : polygon.holes)
-      if (!hole.empty()) scan(hole);
+      if (hole.size() >= 3) scan(hole);
   }
-  return std::isfinite(best) ? best : 0.0;
+  if (forwardCrossings % 2 == 0 || !std::isfinite(forward) || !std::isfinite(backward)) return {};
+  return {forward, backward};
 }
 
 // Value at fraction x in [0, 1] of a function sampled at (i + 0.5) / n, linear in between.
@@ -154,9 +161,9 @@ LRFunction blobLRFunction(const Region& blob, const Polyline& streamline, int sa
   f.right.assign(samples, 0.0);
   for (int i = 0; i < samples; ++i) {
     auto sample = frame.at((i + 0.5) / samples * frame.length());
-    if (!pointInRegion(sample.point, blob)) continue;
-    f.left[i] = firstBoundaryHit(sample.point, sample.normal, blob);
-    f.right[i] = firstBoundaryHit(sample.point, -sample.normal, blob);
+    LineHits hits = boundaryAlongLine(sample.point, sample.normal, blob);
+    f.left[i] = hits.forward;
+    f.right[i] = hits.backward;
   }
   normalise(f);
   return f;

@@ -321,17 +321,23 @@ double fitWidthScale(const Region& outline, StrokeFrame frame, const Polyline& s
     if (element.left[i] > negligible) guess = std::min(guess, space.left[i] / element.left[i]);
     if (element.right[i] > negligible) guess = std::min(guess, space.right[i] / element.right[i]);
   }
+  // Bracket the answer with steps that start small (the guess is usually close) and square
+  // their ratio each time, then bisect.
   const double sliver = 1e-6 * maxScale;
-  double lo = 0.0, hi = 0.0, scale = std::clamp(guess, sliver, maxScale);
+  double scale = std::clamp(guess, sliver, maxScale), lo = 0.0, hi = 0.0, ratio = 1.02;
   if (fits(scale)) {
-    for (lo = scale; lo < maxScale; lo = hi) {  // grow until it no longer fits
-      hi = std::min(2.0 * lo, maxScale);
+    for (lo = scale; lo < maxScale; ratio *= ratio) {  // grow until it no longer fits
+      hi = std::min(lo * ratio, maxScale);
       if (!fits(hi)) break;
+      lo = hi;
     }
     if (lo >= maxScale) return maxScale;
   } else {
-    for (hi = scale, scale *= 0.5; scale >= sliver; hi = scale, scale *= 0.5)  // shrink until it fits
-      if (fits(scale)) { lo = scale; break; }
+    for (hi = scale; hi > sliver; ratio *= ratio) {  // shrink until it fits
+      double trial = std::max(hi / ratio, sliver);
+      if (fits(trial)) { lo = trial; break; }
+      hi = trial;
+    }
     if (lo == 0.0) return 0.0;
   }
   while (hi - lo > 5e-4 * lo) {
