@@ -24,6 +24,11 @@ struct StrokeFrame {
 // rotation (the refinement's ±1…10°, 3.3.6) the extent is that of the rotated outline, so
 // the rotated element still spans the whole streamline.
 StrokeFrame strokeFrameFor(const Region& outline, Vec2 spineStart, Vec2 spineEnd, double rotation = 0.0);
+// The outline turned by `frame.rotation` about the midpoint of frame.spineStart–spineEnd: the
+// element as the bend sees it, e.g. for the rotated candidates' LR functions (3.3.6):
+//   frame = strokeFrameFor(outline, s0, s1, r);
+//   lr = elementLRFunction(rotatedElement(outline, frame), s0, s1, n);
+Region rotatedElement(const Region& outline, const StrokeFrame& frame);
 
 // Edges are subdivided to at most `maxEdge` (in the element's units, before mapping) so that
 // they follow the curve. A map with one reflection reverses orientation: the bent rings are

@@ -22,16 +22,14 @@ void checkFinite(double value, const char* where, const char* what) {
   if (!std::isfinite(value)) throw InputError(where, std::string(what) + " must be finite");
 }
 
-// Extent of the outline along the spine line, the outline turned by `rotation` about the
-// spine's midpoint first.
-void spineExtent(const Region& outline, Vec2 spineStart, Vec2 spineEnd, double rotation, double& alongMin,
-                 double& alongMax) {
-  const Vec2 axis = normalized(spineEnd - spineStart), pivot = 0.5 * (spineStart + spineEnd);
+// Extent of the outline along the spine line.
+void spineExtent(const Region& outline, Vec2 spineStart, Vec2 spineEnd, double& alongMin, double& alongMax) {
+  const Vec2 axis = normalized(spineEnd - spineStart);
   alongMin = std::numeric_limits<double>::infinity();
   alongMax = -alongMin;
   auto add = [&](const Ring& ring) {
     for (Vec2 p : ring) {
-      double a = dot(pivot + rotated(p - pivot, rotation) - spineStart, axis);
+      double a = dot(p - spineStart, axis);
       alongMin = std::min(alongMin, a);
       alongMax = std::max(alongMax, a);
     }
@@ -49,6 +47,8 @@ std::vector<Vec2> subdivided(const std::vector<Vec2>& points, bool closed, doubl
   const std::size_t n = points.size();
   if (n == 0) return out;
   out.reserve(n);
+  for (Vec2 p : points)
+    if (!std::isfinite(p.x) || !std::isfinite(p.y)) throw InputError("skeletal stroke", "the element has a non-finite point");
   const std::size_t edges = closed ? n : n - 1;
   for (std::size_t k = 0; k < edges; ++k) {
     Vec2 a = points[k], b = points[(k + 1) % n];
@@ -154,10 +154,22 @@ StrokeFrame strokeFrameFor(const Region& outline, Vec2 spineStart, Vec2 spineEnd
   frame.spineStart = spineStart;
   frame.spineEnd = spineEnd;
   frame.rotation = rotation;
-  spineExtent(outline, spineStart, spineEnd, rotation, frame.alongMin, frame.alongMax);
+  spineExtent(rotatedElement(outline, frame), spineStart, spineEnd, frame.alongMin, frame.alongMax);
   if (!(frame.alongMax > frame.alongMin) || !std::isfinite(frame.alongMax - frame.alongMin))
     throw InputError(where, "the outline is empty or has no extent along its spine");
   return frame;
+}
+
+Region rotatedElement(const Region& outline, const StrokeFrame& frame) {
+  if (frame.rotation == 0.0) return outline;
+  const Vec2 pivot = 0.5 * (frame.spineStart + frame.spineEnd);
+  Region out = outline;
+  for (Polygon& polygon : out) {
+    for (Vec2& p : polygon.outer) p = pivot + rotated(p - pivot, frame.rotation);
+    for (Ring& hole : polygon.holes)
+      for (Vec2& p : hole) p = pivot + rotated(p - pivot, frame.rotation);
+  }
+  return out;
 }
 
 Ring bendRing(const Ring& ring, const StrokeFrame& frame, const Polyline& streamline, double maxEdge) {
@@ -304,16 +316,7 @@ double fitWidthScale(const Region& outline, StrokeFrame frame, const Polyline& s
 
   // Initial guess (3.3.5): the element's extents against the blob's, sample by sample.
   const int samples = 32;
-  Region turned = outline;
-  if (frame.rotation != 0.0) {
-    const Vec2 pivot = 0.5 * (frame.spineStart + frame.spineEnd);
-    for (Polygon& polygon : turned) {
-      for (Vec2& p : polygon.outer) p = pivot + rotated(p - pivot, frame.rotation);
-      for (Ring& hole : polygon.holes)
-        for (Vec2& p : hole) p = pivot + rotated(p - pivot, frame.rotation);
-    }
-  }
-  LRFunction element = reflected(elementLRFunction(turned, frame.spineStart, frame.spineEnd, samples), frame.reflection);
+  LRFunction element = reflected(elementLRFunction(rotatedElement(outline, frame), frame.spineStart, frame.spineEnd, samples), frame.reflection);
   LRFunction space = blobLRFunction(blobRegion, streamline, samples);
   double guess = maxScale;
   const double negligible = 1e-9 * std::max(element.maxLeft, element.maxRight);

@@ -50,6 +50,23 @@ TEST(SkeletalStroke, FrameSpansTheOutlineAlongItsSpine) {
   EXPECT_NEAR(turned.alongMax, 1.0 + 0.5, 1e-12);
 }
 
+TEST(SkeletalStroke, RotatedFrameBendsTheRotatedElementOverTheWholeStreamline) {
+  const double r = 10 * std::numbers::pi / 180;
+  StrokeFrame frame = strokeFrameFor(element(), {1, 0}, {2, 0}, r);
+  Region turned = rotatedElement(element(), frame);
+  // Turned about (1.5, 0): the point (1.5, 0) stays; (0, 2) moves.
+  StrokeFrame plain = strokeFrameFor(turned, {1, 0}, {2, 0});
+  EXPECT_DOUBLE_EQ(plain.alongMin, frame.alongMin);
+  EXPECT_DOUBLE_EQ(plain.alongMax, frame.alongMax);
+  Polyline line = straight({0, 0}, {10, 0}, 5);
+  Region a = bendRegion(element(), frame, line, 0.2), b = bendRegion(turned, plain, line, 0.2);
+  ASSERT_EQ(a[0].outer.size(), b[0].outer.size());
+  Box box = bounds(a);
+  EXPECT_NEAR(box.min.x, 0.0, 1e-9);  // spans the streamline exactly
+  EXPECT_NEAR(box.max.x, 10.0, 1e-9);
+  for (std::size_t k = 0; k < a[0].outer.size(); ++k) EXPECT_LT(distance(a[0].outer[k], b[0].outer[k]), 1e-9);
+}
+
 TEST(SkeletalStroke, StraightStreamlineReproducesTheElementUpToScale) {
   StrokeFrame frame = strokeFrameFor(element(), {0, 0}, {4, 0});
   frame.widthScale = 0.7;
@@ -207,6 +224,7 @@ TEST(SkeletalStroke, BadInputThrows) {
   frame.widthScale = -1;
   EXPECT_THROW(bendRegion(element(), frame, line, 0.5), InputError);
   frame.widthScale = 1;
+  EXPECT_THROW(bendRing({{0, 0}, {std::nan(""), 1}, {1, 1}}, frame, line, 0.5), InputError);
   EXPECT_THROW(fitWidthScale(element(), frame, line, rectangle(0, -5, 8, 5), 0.5, 0.0), InputError);
 }
 
