@@ -110,6 +110,29 @@ TEST(SkeletalStroke, ReflectionsMirrorTheResultAndKeepOrientation) {
   }
 }
 
+TEST(SkeletalStroke, BentElementHasTheReflectedLRFunctionTheMatchChose) {
+  // What matchCost assumes of a reflection is what the bend does: bent along a straight
+  // streamline (scaled 2 along, 1.5 across), the element's own shape, read as a blob, has the
+  // element's reflected function.
+  const int n = 64;
+  LRFunction original = elementLRFunction(element(), {0, 0}, {4, 0}, n);
+  Polyline line = straight({3, 1}, {11, 1}, 4);
+  const Reflection all[] = {Reflection::None, Reflection::AcrossSpine, Reflection::AlongSpine, Reflection::Both};
+  for (Reflection r : all) {
+    StrokeFrame frame = strokeFrameFor(element(), {0, 0}, {4, 0});
+    frame.reflection = r;
+    frame.widthScale = 1.5;
+    Region bent = bendRegion(Region{Polygon{element()[0].outer, {}}}, frame, line, 0.05);
+    LRFunction asBlob = blobLRFunction(bent, line, n);
+    LRFunction expected = reflected(elementLRFunction(Region{Polygon{element()[0].outer, {}}}, {0, 0}, {4, 0}, n), r);
+    for (int i = 0; i < n; ++i) {
+      EXPECT_NEAR(asBlob.left[i], 1.5 * expected.left[i], 1e-9);
+      EXPECT_NEAR(asBlob.right[i], 1.5 * expected.right[i], 1e-9);
+    }
+    EXPECT_LT(matchCost(original, r, asBlob), matchCost(original, r == Reflection::None ? Reflection::Both : Reflection::None, asBlob));
+  }
+}
+
 TEST(SkeletalStroke, CircularArcCarriesTheSpineOntoTheArcAndOffsetsRadially) {
   const double radius = 20, s = 1.3;
   const int pieces = 400;
