@@ -185,6 +185,24 @@ TEST(SkeletalStroke, ShapesKeepPaintAndScaleStrokes) {
   EXPECT_NEAR(area(filledRegion(bent[0])), 32, 1e-6);
 }
 
+TEST(SkeletalStroke, NonzeroFillWithACounterWoundHoleSurvivesEveryReflection) {
+  Shape shape;
+  shape.subpaths.push_back({{{0, -1}, {4, -1}, {4, 1}, {0, 1}}, true});              // counter-clockwise
+  shape.subpaths.push_back({{{1, -0.5}, {1, 0.5}, {3, 0.5}, {3, -0.5}}, true});      // clockwise: a hole
+  shape.fill = Color{};
+  const double expected = (8 - 2) * 2.0 * 0.5;  // area × lengthScale × widthScale
+  StrokeFrame frame = strokeFrameFor(rectangle(0, -1, 4, 1), {0, 0}, {4, 0});
+  frame.widthScale = 0.5;
+  const Reflection all[] = {Reflection::None, Reflection::AcrossSpine, Reflection::AlongSpine, Reflection::Both};
+  for (Reflection r : all) {
+    frame.reflection = r;
+    Shape bent = bendShapes({shape}, frame, straight({0, 0}, {8, 0}, 3), 0.3)[0];
+    EXPECT_NEAR(area(filledRegion(bent)), expected, 1e-6);
+    EXPECT_GT(signedArea(bent.subpaths[0].points), 0.0);
+    EXPECT_LT(signedArea(bent.subpaths[1].points), 0.0);
+  }
+}
+
 TEST(SkeletalStroke, FitWidthScaleFillsARectangularBlob) {
   const double h = 1.0, blobHalfHeight = 1.5;
   Region outline = rectangle(0, -h / 2, 4, h / 2);
