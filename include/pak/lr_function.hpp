@@ -23,14 +23,23 @@ struct LRFunction {
 // give only the line's position and direction.
 LRFunction elementLRFunction(const Region& outline, Vec2 spineStart, Vec2 spineEnd, int samples = 100);
 // For a blob the spine is its (curved) streamline: extents are measured along the
-// streamline's normals, from the start of the streamline to its end.
+// streamline's normals, from the start of the streamline to its end: the distance to the
+// first crossing of the blob's boundary, 0 where the streamline point is outside the blob.
+// Normals are those the skeletal stroke bends along (averaged at vertices, interpolated).
+// Bad input (samples < 1, an empty outline, a degenerate spine/streamline) throws InputError.
 LRFunction blobLRFunction(const Region& blob, const Polyline& streamline, int samples = 100);
 
 // The four ways to lay an element on a streamline (3.3.2): reflect across the spine (swap L
 // and R), along it (reverse L and R), or both.
 enum class Reflection { None, AcrossSpine, AlongSpine, Both };
 
-// Eq. 3.1 between the element's normalised function, reflected, and the blob's.
+// The element's function as it reads after the reflection (AcrossSpine swaps L and R,
+// AlongSpine reverses both, Both does both).
+LRFunction reflected(const LRFunction& function, Reflection reflection);
+
+// Eq. 3.1 between the element's normalised function, reflected, and the blob's. When the
+// sample counts differ, the element's function is resampled (linearly, at the blob's sample
+// positions) so the sum runs over the blob's samples.
 double matchCost(const LRFunction& element, Reflection reflection, const LRFunction& blob);
 
 struct LRMatch {
@@ -39,7 +48,7 @@ struct LRMatch {
   double cost = 0.0;
 };
 // The candidate and reflection of least cost; ties go to the lower index, then the order of
-// the enum (deterministic).
+// the enum (deterministic). No candidates: candidate stays -1.
 LRMatch bestMatch(const std::vector<LRFunction>& candidates, const LRFunction& blob);
 
 }  // namespace pak

@@ -20,19 +20,34 @@ struct StrokeFrame {
   double widthScale = 1.0;
 };
 
-// The frame for an element outline: its spine line and its extent along it.
-StrokeFrame strokeFrameFor(const Region& outline, Vec2 spineStart, Vec2 spineEnd);
+// The frame for an element outline: its spine line and its extent along it. With a
+// rotation (the refinement's ±1…10°, 3.3.6) the extent is that of the rotated outline, so
+// the rotated element still spans the whole streamline.
+StrokeFrame strokeFrameFor(const Region& outline, Vec2 spineStart, Vec2 spineEnd, double rotation = 0.0);
+// The outline turned by `frame.rotation` about the midpoint of frame.spineStart–spineEnd: the
+// element as the bend sees it, e.g. for the rotated candidates' LR functions (3.3.6):
+//   frame = strokeFrameFor(outline, s0, s1, r);
+//   lr = elementLRFunction(rotatedElement(outline, frame), s0, s1, n);
+Region rotatedElement(const Region& outline, const StrokeFrame& frame);
 
 // Edges are subdivided to at most `maxEdge` (in the element's units, before mapping) so that
-// they follow the curve.
+// they follow the curve. A map with one reflection reverses orientation: the bent rings are
+// then reversed so that counter-clockwise rings stay counter-clockwise (bendRegion also
+// re-normalises). Points beyond the frame's extent continue straight past the streamline's
+// ends. Bad input (maxEdge <= 0, a degenerate frame or streamline, widthScale < 0) throws
+// InputError.
 Ring bendRing(const Ring& ring, const StrokeFrame& frame, const Polyline& streamline, double maxEdge);
 Region bendRegion(const Region& region, const StrokeFrame& frame, const Polyline& streamline, double maxEdge);
-// The element's art with paint kept (stroke widths scaled by the mean of the two scales).
+// The element's art with paint kept; stroke widths are scaled by the geometric mean
+// sqrt(lengthScale * widthScale) of the two scales (lengthScale = streamline length / frame
+// extent), which keeps a stroke's painted area in proportion to the element's.
 std::vector<Shape> bendShapes(const std::vector<Shape>& shapes, const StrokeFrame& frame,
                               const Polyline& streamline, double maxEdge);
 
 // The largest widthScale (at most `maxScale`) for which the bent outline stays inside `blob`,
-// to a relative precision of 1e-3; 0 when even a sliver does not fit.
+// to a relative precision of 1e-3; 0 when even a sliver (1e-6 maxScale) does not fit.
+// `frame.widthScale` is ignored. Starts from the LR functions' estimate and bisects with a
+// grid-based containment test (no Clipper).
 double fitWidthScale(const Region& outline, StrokeFrame frame, const Polyline& streamline,
                      const Region& blob, double maxEdge, double maxScale);
 
