@@ -30,19 +30,6 @@ std::array<Vec2, 2> elementSpine(const ElementArt& element) {
   return {c - axis, c + axis};
 }
 
-Region rotatedAboutSpine(const Region& outline, const StrokeFrame& frame, double radians) {
-  if (radians == 0.0) return outline;
-  Vec2 u = normalized(frame.spineEnd - frame.spineStart);
-  Vec2 pivot = frame.spineStart + u * (0.5 * (frame.alongMin + frame.alongMax));
-  Region out = outline;
-  for (Polygon& p : out) {
-    for (Vec2& v : p.outer) v = pivot + rotated(v - pivot, radians);
-    for (Ring& h : p.holes)
-      for (Vec2& v : h) v = pivot + rotated(v - pivot, radians);
-  }
-  return out;
-}
-
 FlowPrototype flowPrototype(const ElementArt& element, int maxRotationDegrees, int lrSamples) {
   FlowPrototype p;
   p.art = &element;
@@ -50,18 +37,15 @@ FlowPrototype flowPrototype(const ElementArt& element, int maxRotationDegrees, i
   auto spine = elementSpine(element);
   p.spineStart = spine[0];
   p.spineEnd = spine[1];
-  StrokeFrame base = strokeFrameFor(p.outline, p.spineStart, p.spineEnd);
   p.rotations.push_back(0.0);
   for (int d = 1; d <= maxRotationDegrees; ++d) {
     p.rotations.push_back(d * std::numbers::pi / 180.0);
     p.rotations.push_back(-d * std::numbers::pi / 180.0);
   }
   for (double r : p.rotations) {
-    Region turned = rotatedAboutSpine(p.outline, base, r);
-    StrokeFrame frame = strokeFrameFor(turned, p.spineStart, p.spineEnd);
-    frame.rotation = r;
+    StrokeFrame frame = strokeFrameFor(p.outline, p.spineStart, p.spineEnd, r);
     p.frames.push_back(frame);
-    p.lr.push_back(elementLRFunction(turned, p.spineStart, p.spineEnd, lrSamples));
+    p.lr.push_back(elementLRFunction(rotatedElement(p.outline, frame), p.spineStart, p.spineEnd, lrSamples));
   }
   return p;
 }

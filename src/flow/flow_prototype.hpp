@@ -24,7 +24,4 @@ std::array<Vec2, 2> elementSpine(const ElementArt& element);
 
 FlowPrototype flowPrototype(const ElementArt& element, int maxRotationDegrees, int lrSamples);
 
-// The outline turned by `radians` about the midpoint of the spine line's extent.
-Region rotatedAboutSpine(const Region& outline, const StrokeFrame& frame, double radians);
-
 }  // namespace pak
