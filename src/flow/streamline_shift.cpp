@@ -1,0 +1,378 @@
+#include "pak/streamline_shift.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <queue>
+#include <utility>
+
+#include "pak/bezier_fit.hpp"
+#include "pak/clipping.hpp"
+#include "pak/closest_point.hpp"
+#include "pak/error.hpp"
+#include "pak/region_index.hpp"
+#include "pak/resample.hpp"
+#include "pak/segment_grid.hpp"
+
+namespace pak {
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+bool finite(Vec2 p) { return std::isfinite(p.x) && std::isfinite(p.y); }
+
+void checkLimit(double limit) {
+  if (!(limit > 0.0) || !std::isfinite(limit)) throw InputError("", "streamline shift limit must be a positive number");
+}
+
+void checkStreamline(const Polyline& line) {
+  if (line.empty()) throw InputError("", "cannot shift an empty streamline");
+  for (Vec2 p : line)
+    if (!finite(p)) throw InputError("", "non-finite coordinate in a shifted streamline");
+}
+
+// Unit direction of the streamline leaving its first point (`atEnd`: arriving at its last
+// point), from the nearest distinct vertex; zero for a streamline of one point.
+Vec2 endDirection(const Polyline& line, bool atEnd) {
+  const std::size_t n = line.size();
+  for (std::size_t k = 1; k < n; ++k) {
+    const Vec2 d = atEnd ? line[n - 1] - line[n - 1 - k] : line[k] - line[0];
+    if (lengthSquared(d) > 0.0) return normalized(d);
+  }
+  return {};
+}
+
+// Distance along the ray origin + t·dir (t in (0, cap]) to the first crossing of a boundary
+// of `region`; `cap` when there is none.
+double rayHit(Vec2 origin, Vec2 dir, const Region& region, double cap) {
+  double best = cap;
+  auto ring = [&](const Ring& r) {
+    for (std::size_t i = 0, n = r.size(); i < n; ++i) {
+      const Vec2 a = r[i], b = r[(i + 1) % n];
+      const Vec2 e = b - a;
+      const double denominator = cross(dir, e);
+      if (denominator == 0.0) continue;  // parallel: touching along an edge counts at its ends
+      const Vec2 w = a - origin;
+      const double t = cross(w, e) / denominator;
+      const double s = cross(w, dir) / denominator;
+      if (t > 0.0 && t < best && s >= 0.0 && s <= 1.0) best = t;
+    }
+  };
+  for (const Polygon& poly : region) {
+    ring(poly.outer);
+    for (const Ring& h : poly.holes) ring(h);
+  }
+  return best;
+}
+
+Region boxRegion(const Box& box) {
+  return {Polygon{{box.min, {box.max.x, box.min.y}, box.max, {box.min.x, box.max.y}}, {}}};
+}
+
+// Where the shifted streamline may go: outside `occupied` and inside `freeSpace` (an empty
+// freeSpace means no bound), both clipped to a working box. `clearance` is the distance to the
+// nearest boundary of either, capped at `reach`: a segment whose ends are free and whose ends'
+// clearances add up to its length or more crosses no boundary (the two discs cover it).
+class FreeSpaceMap {
+ public:
+  FreeSpaceMap(const Region& occupied, const Region& freeSpace, const Box& box, double reach) : reach_(reach) {
+    const Region window = boxRegion(box);
+    const double cell = std::max(reach, std::max(box.width(), box.height()) / 512.0);
+    if (!occupied.empty()) {
+      occupied_ = intersect(occupied, window);
+      occupiedIndex_ = RegionIndex(occupied_, cell);
+      occupiedBox_ = bounds(occupied_);
+    }
+    bounded_ = !freeSpace.empty();
+    if (bounded_) {
+      free_ = intersect(freeSpace, window);
+      freeIndex_ = RegionIndex(free_, cell);
+      freeBox_ = bounds(free_);
+    }
+    auto addRings = [&](const Region& region) {
+      for (const Polygon& poly : region) {
+        addRing(poly.outer);
+        for (const Ring& h : poly.holes) addRing(h);
+      }
+    };
+    addRings(occupied_);
+    addRings(free_);
+    grid_.configure(box, reach, ends_.size() / 2);
+    grid_.rebuild(points_.data(), ends_.data(), ends_.size() / 2);
+  }
+
+  // RegionIndex answers points outside its region's bounds by a slow outward search; the
+  // bounds test first keeps those cheap.
+  bool isFree(Vec2 p) const {
+    if (occupiedBox_.contains(p) && occupiedIndex_.query(p, false).inside) return false;
+    if (bounded_ && !(freeBox_.contains(p) && freeIndex_.query(p, false).inside)) return false;
+    return true;
+  }
+
+  double clearance(Vec2 p) const {
+    double best = reach_ * reach_;
+    grid_.forEachNear(p, 1, [&](int s) {
+      const Vec2 q = closestPointOnSegment(p, points_[ends_[2 * s]], points_[ends_[2 * s + 1]]);
+      best = std::min(best, lengthSquared(p - q));
+    });
+    return std::sqrt(best);
+  }
+
+ private:
+  void addRing(const Ring& ring) {
+    const int first = static_cast<int>(points_.size());
+    const int n = static_cast<int>(ring.size());
+    points_.insert(points_.end(), ring.begin(), ring.end());
+    for (int k = 0; k < n; ++k) {
+      ends_.push_back(first + k);
+      ends_.push_back(first + (k + 1) % n);
+    }
+  }
+
+  double reach_;
+  bool bounded_ = false;
+  Region occupied_, free_;
+  RegionIndex occupiedIndex_, freeIndex_;
+  Box occupiedBox_, freeBox_;  // empty boxes contain nothing
+  std::vector<Vec2> points_;
+  std::vector<int> ends_;
+  SegmentGrid grid_;
+};
+
+// Lattice steps (along, across) ordered by length, the `count` nearest to a node (itself
+// excluded); ties are broken by the step's coordinates so the order is fixed.
+std::vector<std::pair<int, int>> latticeSteps(int count, int maxAlong, int maxAcross) {
+  const int radius = static_cast<int>(std::ceil(std::sqrt(count / 3.0))) + 2;
+  const int ra = std::min(radius, maxAlong), rc = std::min(radius, maxAcross);
+  std::vector<std::pair<int, int>> steps;
+  for (int di = -ra; di <= ra; ++di)
+    for (int dk = -rc; dk <= rc; ++dk)
+      if (di != 0 || dk != 0) steps.emplace_back(di, dk);
+  std::sort(steps.begin(), steps.end(), [](auto a, auto b) {
+    const int la = a.first * a.first + a.second * a.second, lb = b.first * b.first + b.second * b.second;
+    return la != lb ? la < lb : a < b;
+  });
+  if (steps.size() > static_cast<std::size_t>(count)) steps.resize(static_cast<std::size_t>(count));
+  return steps;
+}
+
+// The `count` nearest of the first `candidates` positions to p (ties by index).
+std::vector<int> nearestNodes(Vec2 p, const std::vector<Vec2>& positions, int candidates, int count) {
+  std::vector<std::pair<double, int>> byDistance;
+  for (int i = 0; i < candidates; ++i)
+    byDistance.emplace_back(lengthSquared(positions[static_cast<std::size_t>(i)] - p), i);
+  const std::size_t keep = std::min(byDistance.size(), static_cast<std::size_t>(count));
+  std::partial_sort(byDistance.begin(), byDistance.begin() + static_cast<std::ptrdiff_t>(keep), byDistance.end());
+  std::vector<int> out;
+  for (std::size_t i = 0; i < keep; ++i) out.push_back(byDistance[i].second);
+  return out;
+}
+
+// Does every point and every segment of `line` stay in free space?
+bool staysFree(const Polyline& line, const FreeSpaceMap& map) {
+  std::vector<double> clear(line.size());
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    if (!map.isFree(line[i])) return false;
+    clear[i] = map.clearance(line[i]);
+  }
+  for (std::size_t i = 1; i < line.size(); ++i)
+    if (clear[i - 1] + clear[i] < distance(line[i - 1], line[i])) return false;
+  return true;
+}
+
+}  // namespace
+
+std::array<Vec2, 2> shiftedEndpoints(const Polyline& streamline, const Region& occupied, const Region& freeSpace,
+                                     double limit) {
+  checkStreamline(streamline);
+  checkLimit(limit);
+  std::array<Vec2, 2> ends{streamline.front(), streamline.back()};
+  // Rays stop at the first boundary of either region; one that meets none ends at `cap`, so
+  // open space on one side (far from everything) reads as "a lot of room".
+  const double cap = 10.0 * limit;
+  for (int e = 0; e < 2; ++e) {
+    const Vec2 direction = endDirection(streamline, e == 1);
+    if (direction == Vec2{}) continue;
+    const Vec2 left = perp(direction);
+    auto hit = [&](Vec2 dir) {
+      double t = rayHit(ends[e], dir, occupied, cap);
+      return std::min(t, rayHit(ends[e], dir, freeSpace, cap));
+    };
+    // Midpoint of the free segment along the normal, as a signed offset to the left.
+    const double middle = 0.5 * (hit(left) - hit(-left));
+    ends[e] += left * std::clamp(middle, -limit, limit);
+  }
+  return ends;
+}
+
+Polyline shiftStreamline(const Polyline& streamline, const VectorField& field, const Region& occupied,
+                         const Region& freeSpace, double maxLeft, double maxRight, const ShiftOptions& options) {
+  checkStreamline(streamline);
+  const double limit = options.limit;
+  checkLimit(limit);
+  if (!(maxLeft >= 0.0) || !(maxRight >= 0.0) || !std::isfinite(maxLeft) || !std::isfinite(maxRight))
+    throw InputError("", "streamline shift widths must be non-negative numbers");
+  if (!(options.fieldWeight >= 0.0) || !(options.distanceWeight >= 0.0) || !(options.fieldPower > 0.0) ||
+      !std::isfinite(options.fieldWeight) || !std::isfinite(options.distanceWeight) ||
+      !std::isfinite(options.fieldPower) || options.neighbours < 1 || !(options.fitTolerance >= 0.0) ||
+      !std::isfinite(options.fitTolerance))
+    throw InputError("", "invalid streamline shift options");
+  if (polylineLength(streamline) <= 0.0) return streamline;
+
+  // Thesis 3.3.6: nodes every 0.25 g_limit along the streamline and across it.
+  const double h = 0.25 * limit;
+  const Polyline samples = resamplePolyline(streamline, h);
+  const int rows = static_cast<int>(samples.size());
+  const int kRight = static_cast<int>(std::floor(maxRight / h + 1e-9));
+  const int kLeft = static_cast<int>(std::floor(maxLeft / h + 1e-9));
+  const int columns = kLeft + kRight + 1;
+  const std::array<Vec2, 2> ends = shiftedEndpoints(streamline, occupied, freeSpace, limit);
+
+  const int lattice = rows * columns;
+  const int start = lattice, goal = lattice + 1;
+  std::vector<Vec2> position(static_cast<std::size_t>(lattice) + 2);
+  std::vector<double> offset(static_cast<std::size_t>(lattice), 0.0);  // signed, + to the left
+  for (int i = 0; i < rows; ++i) {
+    const Vec2 tangent = normalized(samples[std::min(i + 1, rows - 1)] - samples[std::max(i - 1, 0)]);
+    for (int c = 0; c < columns; ++c) {
+      const int k = c - kRight;
+      offset[static_cast<std::size_t>(i * columns + c)] = k * h;
+      position[static_cast<std::size_t>(i * columns + c)] = samples[static_cast<std::size_t>(i)] + perp(tangent) * (k * h);
+    }
+  }
+  position[static_cast<std::size_t>(start)] = ends[0];
+  position[static_cast<std::size_t>(goal)] = ends[1];
+
+  // The thesis examines each node's 150 nearest nodes. The nodes form a lattice of spacing h,
+  // so those are (up to the lattice's bending) the nearest lattice steps: no k-d tree needed.
+  const std::vector<std::pair<int, int>> steps = latticeSteps(options.neighbours, rows - 1, columns - 1);
+  double stepReach = h;
+  for (auto [di, dk] : steps) stepReach = std::max(stepReach, h * std::sqrt(double(di * di + dk * dk)));
+  const std::vector<int> startNearest = nearestNodes(ends[0], position, lattice, options.neighbours);
+  const std::vector<int> goalNearest = nearestNodes(ends[1], position, lattice, options.neighbours);
+  double endReach = 0.0;
+  if (!startNearest.empty()) endReach = distance(ends[0], position[static_cast<std::size_t>(startNearest.back())]);
+  if (!goalNearest.empty())
+    endReach = std::max(endReach, distance(ends[1], position[static_cast<std::size_t>(goalNearest.back())]));
+
+  Box box;
+  for (Vec2 p : position) box.add(p);
+  const double reach = 0.5 * std::max(stepReach, endReach) + h;
+  box.add(box.min - Vec2{reach + 2 * h, reach + 2 * h});
+  box.add(box.max + Vec2{reach + 2 * h, reach + 2 * h});
+  const FreeSpaceMap map(occupied, freeSpace, box, reach);
+
+  const std::size_t nodeCount = position.size();
+  std::vector<char> usable(nodeCount);
+  std::vector<double> clearance(nodeCount, 0.0);
+  for (std::size_t n = 0; n < nodeCount; ++n) {
+    usable[n] = map.isFree(position[n]);
+    if (usable[n]) clearance[n] = map.clearance(position[n]);
+  }
+  if (!usable[static_cast<std::size_t>(start)] || !usable[static_cast<std::size_t>(goal)]) return streamline;
+
+  // D(s_i, p) of eq. 3.2: distance to the original streamline (its resampling), searched
+  // outward from the node's own sample until the samples are too far to hold a closer point.
+  std::vector<double> toOriginal(nodeCount, 0.0);
+  for (int i = 0; i < rows; ++i)
+    for (int c = 0; c < columns; ++c) {
+      const std::size_t n = static_cast<std::size_t>(i * columns + c);
+      const Vec2 p = position[n];
+      double best = std::abs(offset[n]);
+      for (int dir : {-1, 1})
+        for (int j = dir < 0 ? i - 1 : i; j >= 0 && j + 1 < rows; j += dir) {
+          const Vec2 q = closestPointOnSegment(p, samples[static_cast<std::size_t>(j)], samples[static_cast<std::size_t>(j + 1)]);
+          best = std::min(best, distance(p, q));
+          const Vec2 near = samples[static_cast<std::size_t>(dir < 0 ? j : j + 1)];
+          if (distance(p, near) - h > best) break;  // later segments start further out still
+        }
+      toOriginal[n] = best;
+    }
+  for (int n : {start, goal})
+    toOriginal[static_cast<std::size_t>(n)] = closestPointOnPolyline(position[static_cast<std::size_t>(n)], streamline).distance;
+
+  // Lattice nodes that have the goal among their nearest nodes (or it among the goal's).
+  std::vector<char> reachesGoal(nodeCount, 0);
+  for (int n : goalNearest) reachesGoal[static_cast<std::size_t>(n)] = 1;
+  for (int n = 0; n < lattice; ++n)
+    if (distance(position[static_cast<std::size_t>(n)], ends[1]) <= stepReach) reachesGoal[static_cast<std::size_t>(n)] = 1;
+  std::vector<int> startEdges = startNearest;
+  if (distance(ends[0], ends[1]) <= endReach) startEdges.push_back(goal);
+
+  // The field's sense along this streamline (a 1-RoSy field may run against how it was stored).
+  double sense = 0.0;
+  for (int i = 0; i + 1 < rows; ++i) sense += dot(field.at(samples[i]), samples[i + 1] - samples[i]);
+  const double fieldSign = sense < 0.0 ? -1.0 : 1.0;
+
+  // Dijkstra, label-setting on nodes: a node's predecessor is fixed when it is settled, and
+  // the no-back-tracking rule uses that predecessor (the exact search over (node, predecessor)
+  // states would multiply the graph by the neighbour count).
+  std::vector<double> cost(nodeCount, kInfinity);
+  std::vector<int> predecessor(nodeCount, -1);
+  std::vector<char> settled(nodeCount, 0);
+  using Entry = std::pair<double, int>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;
+  cost[static_cast<std::size_t>(start)] = 0.0;
+  queue.push({0.0, start});
+  const double wf = options.fieldWeight, wd = options.distanceWeight, power = options.fieldPower;
+  const bool cubic = power == 3.0;  // the thesis's p; std::pow is a large share of the search
+  while (!queue.empty()) {
+    const double pathCost = queue.top().first;
+    const int a = queue.top().second;
+    queue.pop();
+    const std::size_t ua = static_cast<std::size_t>(a);
+    if (settled[ua]) continue;
+    settled[ua] = 1;
+    if (a == goal) break;
+    const Vec2 pa = position[ua];
+    const bool hasIncoming = predecessor[ua] >= 0;
+    const Vec2 incoming = hasIncoming ? pa - position[static_cast<std::size_t>(predecessor[ua])] : Vec2{};
+    const Vec2 v = field.at(pa) * fieldSign;
+    // Eq. 3.2 per unit of path (see docs/flowpak-shift.md): w = |e|/h (w_f (1 - f^p) + w_d D / g_limit).
+    const double distanceTerm = wd * toOriginal[ua] / limit;
+    auto relax = [&](int b) {
+      const std::size_t ub = static_cast<std::size_t>(b);
+      if (!usable[ub] || settled[ub]) return;
+      const Vec2 e = position[ub] - pa;
+      const double len = length(e);
+      if (len <= 0.0) return;
+      if (hasIncoming && dot(incoming, e) <= 0.0) return;  // turning by 90° or more
+      if (clearance[ua] + clearance[ub] < len) return;     // the edge might cross a boundary
+      const double f = std::clamp(dot(e, v) / len, 0.0, 1.0);
+      const double fp = cubic ? f * f * f : std::pow(f, power);
+      const double w = len / h * (wf * (1.0 - fp) + distanceTerm);
+      if (pathCost + w < cost[ub]) {
+        cost[ub] = pathCost + w;
+        predecessor[ub] = a;
+        queue.push({cost[ub], b});
+      }
+    };
+    if (a == start) {
+      for (int b : startEdges) relax(b);
+      continue;
+    }
+    const int i = a / columns, c = a % columns;
+    for (auto [di, dk] : steps) {
+      const int ni = i + di, nc = c + dk;
+      if (ni >= 0 && ni < rows && nc >= 0 && nc < columns) relax(ni * columns + nc);
+    }
+    if (reachesGoal[ua]) relax(goal);
+  }
+  if (!settled[static_cast<std::size_t>(goal)]) return streamline;
+
+  Polyline path;
+  for (int n = goal; n >= 0; n = predecessor[static_cast<std::size_t>(n)]) path.push_back(position[static_cast<std::size_t>(n)]);
+  std::reverse(path.begin(), path.end());
+
+  // Smooth with cubic Béziers [Sch90]; a fit that strays out of free space is retried tighter,
+  // and the node path itself (whose edges were checked) is the last resort.
+  double tolerance = options.fitTolerance > 0.0 ? options.fitTolerance : 0.25 * limit;
+  for (int attempt = 0; attempt < 3; ++attempt, tolerance *= 0.5) {
+    Polyline smooth = flatten(fitCubicBeziers(path, tolerance), 0.25 * tolerance);
+    if (staysFree(smooth, map)) return smooth;
+  }
+  return path;
+}
+
+}  // namespace pak
