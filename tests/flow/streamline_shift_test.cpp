@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <numbers>
 
 #include "pak/clipping.hpp"
 #include "pak/error.hpp"
@@ -126,6 +127,41 @@ TEST(StreamlineShift, OccupiedSpaceOnTheLeftPushesTheStreamlineRightAndIsAvoided
       EXPECT_LT(p.y, -0.5);
     }
   expectMonotoneInX(path);
+}
+
+TEST(StreamlineShift, CurvedStreamlineInACircularFieldStaysInItsAnnulus) {
+  // Counter-clockwise flow around the origin; the streamline is a quarter circle of radius 20.
+  VectorField field;
+  field.origin = {-30, -30};
+  field.cell = 0.5;
+  field.nx = field.ny = 120;
+  for (int j = 0; j < field.ny; ++j)
+    for (int i = 0; i < field.nx; ++i)
+      field.values.push_back(normalized(perp(field.origin + Vec2{(i + 0.5) * field.cell, (j + 0.5) * field.cell})));
+  Polyline arc;
+  for (int k = 0; k <= 45; ++k) arc.push_back(rotated(Vec2{20, 0}, std::numbers::pi / 2 * k / 45.0));
+  Ring outer, hole;
+  for (int k = 0; k < 200; ++k) {
+    outer.push_back(rotated(Vec2{26, 0}, 2 * std::numbers::pi * k / 200.0));
+    hole.push_back(rotated(Vec2{17, 0}, -2 * std::numbers::pi * k / 200.0));
+  }
+  const Region annulus{Polygon{outer, {hole}}};
+  ShiftOptions options;
+  options.limit = 1.0;
+  // Room 3 inward (left of a counter-clockwise arc), 6 outward: the ends move out by the limit.
+  const Polyline path = shiftStreamline(arc, field, {}, annulus, 2.0, 2.0, options);
+  ASSERT_GE(path.size(), 2u);
+  EXPECT_NEAR(length(path.front()), 21, 1e-3);
+  EXPECT_NEAR(length(path.back()), 21, 1e-3);
+  double previousAngle = -1e9;
+  for (Vec2 p : path) {
+    EXPECT_GT(length(p), 17.0);
+    EXPECT_LT(length(p), 26.0);
+    EXPECT_NEAR(length(p), 20.0, 2.0 + 0.25);  // within the node graph's widths (+ fit tolerance)
+    const double angle = std::atan2(p.y, p.x);
+    EXPECT_GE(angle, previousAngle - 1e-9);  // never back-tracks around the circle
+    previousAngle = angle;
+  }
 }
 
 TEST(StreamlineShift, FieldAgainstTheStreamlineDirectionStillGivesAForwardPath) {
