@@ -272,20 +272,29 @@ Polyline shiftStreamline(const Polyline& streamline, const VectorField& field, c
   }
   if (!usable[static_cast<std::size_t>(start)] || !usable[static_cast<std::size_t>(goal)]) return streamline;
 
-  // D(s_i, p) of eq. 3.2: distance to the original streamline (its resampling), searched
-  // outward from the node's own sample until the samples are too far to hold a closer point.
+  // D(s_i, p) of eq. 3.2: distance to the original streamline (its resampling). A local
+  // search: outward from the node's own sample until a sample is more than the best distance
+  // plus one spacing away (exact for streamlines that do not curl back within that distance).
   std::vector<double> toOriginal(nodeCount, 0.0);
+  auto segmentDistance2 = [](Vec2 p, Vec2 a, Vec2 b) {
+    const Vec2 ab = b - a;
+    const double l2 = lengthSquared(ab);
+    const double t = l2 > 0.0 ? std::clamp(dot(p - a, ab) / l2, 0.0, 1.0) : 0.0;
+    return lengthSquared(p - (a + ab * t));
+  };
   for (int i = 0; i < rows; ++i)
     for (int c = 0; c < columns; ++c) {
       const std::size_t n = static_cast<std::size_t>(i * columns + c);
+      if (!usable[n]) continue;
       const Vec2 p = position[n];
       double best = std::abs(offset[n]);
+      double best2 = best * best;
       for (int dir : {-1, 1})
         for (int j = dir < 0 ? i - 1 : i; j >= 0 && j + 1 < rows; j += dir) {
-          const Vec2 q = closestPointOnSegment(p, samples[static_cast<std::size_t>(j)], samples[static_cast<std::size_t>(j + 1)]);
-          best = std::min(best, distance(p, q));
-          const Vec2 near = samples[static_cast<std::size_t>(dir < 0 ? j : j + 1)];
-          if (distance(p, near) - h > best) break;  // later segments start further out still
+          const Vec2 a = samples[static_cast<std::size_t>(j)], b = samples[static_cast<std::size_t>(j + 1)];
+          best2 = std::min(best2, segmentDistance2(p, a, b));
+          best = std::sqrt(best2);
+          if (lengthSquared(p - (dir < 0 ? a : b)) > (best + h) * (best + h)) break;
         }
       toOriginal[n] = best;
     }
@@ -310,35 +319,49 @@ Polyline shiftStreamline(const Polyline& streamline, const VectorField& field, c
   // states would multiply the graph by the neighbour count).
   std::vector<double> cost(nodeCount, kInfinity);
   std::vector<int> predecessor(nodeCount, -1);
-  std::vector<char> settled(nodeCount, 0);
+  std::vector<char> open(usable);  // usable and not yet settled
   using Entry = std::pair<double, int>;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;
   cost[static_cast<std::size_t>(start)] = 0.0;
   queue.push({0.0, start});
   const double wf = options.fieldWeight, wd = options.distanceWeight, power = options.fieldPower;
-  const bool cubic = power == 3.0;  // the thesis's p; std::pow is a large share of the search
+  const bool cubic = power == 3.0;  // the thesis's p; std::pow would be a large share of the search
+  // Per column, the lattice steps that stay within the columns, as index offsets.
+  std::vector<std::vector<std::pair<int, int>>> columnSteps(static_cast<std::size_t>(columns));
+  int maxAlong = 0;
+  for (int c = 0; c < columns; ++c)
+    for (auto [di, dk] : steps)
+      if (c + dk >= 0 && c + dk < columns) {
+        columnSteps[static_cast<std::size_t>(c)].emplace_back(di, di * columns + dk);
+        maxAlong = std::max(maxAlong, std::abs(di));
+      }
+  bool goalSettled = false;
   while (!queue.empty()) {
     const double pathCost = queue.top().first;
     const int a = queue.top().second;
     queue.pop();
     const std::size_t ua = static_cast<std::size_t>(a);
-    if (settled[ua]) continue;
-    settled[ua] = 1;
-    if (a == goal) break;
+    if (!open[ua]) continue;
+    open[ua] = 0;
+    if (a == goal) {
+      goalSettled = true;
+      break;
+    }
     const Vec2 pa = position[ua];
     const bool hasIncoming = predecessor[ua] >= 0;
     const Vec2 incoming = hasIncoming ? pa - position[static_cast<std::size_t>(predecessor[ua])] : Vec2{};
     const Vec2 v = field.at(pa) * fieldSign;
+    const double clearanceA = clearance[ua];
     // Eq. 3.2 per unit of path (see docs/flowpak-shift.md): w = |e|/h (w_f (1 - f^p) + w_d D / g_limit).
     const double distanceTerm = wd * toOriginal[ua] / limit;
     auto relax = [&](int b) {
       const std::size_t ub = static_cast<std::size_t>(b);
-      if (!usable[ub] || settled[ub]) return;
+      if (!open[ub]) return;
       const Vec2 e = position[ub] - pa;
-      const double len = length(e);
-      if (len <= 0.0) return;
       if (hasIncoming && dot(incoming, e) <= 0.0) return;  // turning by 90° or more
-      if (clearance[ua] + clearance[ub] < len) return;     // the edge might cross a boundary
+      const double len2 = lengthSquared(e), reach = clearanceA + clearance[ub];
+      if (len2 <= 0.0 || reach * reach < len2) return;  // the edge might cross a boundary
+      const double len = std::sqrt(len2);
       const double f = std::clamp(dot(e, v) / len, 0.0, 1.0);
       const double fp = cubic ? f * f * f : std::pow(f, power);
       const double w = len / h * (wf * (1.0 - fp) + distanceTerm);
@@ -352,14 +375,17 @@ Polyline shiftStreamline(const Polyline& streamline, const VectorField& field, c
       for (int b : startEdges) relax(b);
       continue;
     }
-    const int i = a / columns, c = a % columns;
-    for (auto [di, dk] : steps) {
-      const int ni = i + di, nc = c + dk;
-      if (ni >= 0 && ni < rows && nc >= 0 && nc < columns) relax(ni * columns + nc);
+    const int i = a / columns;
+    const auto& candidates = columnSteps[static_cast<std::size_t>(a % columns)];
+    if (i >= maxAlong && i + maxAlong < rows) {
+      for (auto [di, delta] : candidates) relax(a + delta);
+    } else {
+      for (auto [di, delta] : candidates)
+        if (i + di >= 0 && i + di < rows) relax(a + delta);
     }
     if (reachesGoal[ua]) relax(goal);
   }
-  if (!settled[static_cast<std::size_t>(goal)]) return streamline;
+  if (!goalSettled) return streamline;
 
   Polyline path;
   for (int n = goal; n >= 0; n = predecessor[static_cast<std::size_t>(n)]) path.push_back(position[static_cast<std::size_t>(n)]);
