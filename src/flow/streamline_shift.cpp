@@ -227,41 +227,64 @@ Polyline shiftStreamline(const Polyline& streamline, const VectorField& field, c
   const int kRight = static_cast<int>(std::floor(maxRight / h + 1e-9));
   const int kLeft = static_cast<int>(std::floor(maxLeft / h + 1e-9));
   const int columns = kLeft + kRight + 1;
-  const std::array<Vec2, 2> ends = shiftedEndpoints(streamline, occupied, freeSpace, limit);
+  std::array<Vec2, 2> ends = shiftedEndpoints(streamline, occupied, freeSpace, limit);
 
   const int lattice = rows * columns;
   const int start = lattice, goal = lattice + 1;
   std::vector<Vec2> position(static_cast<std::size_t>(lattice) + 2);
+  std::vector<Vec2> normal(static_cast<std::size_t>(rows));
   std::vector<double> offset(static_cast<std::size_t>(lattice), 0.0);  // signed, + to the left
   for (int i = 0; i < rows; ++i) {
-    const Vec2 tangent = normalized(samples[std::min(i + 1, rows - 1)] - samples[std::max(i - 1, 0)]);
+    normal[static_cast<std::size_t>(i)] = perp(normalized(samples[std::min(i + 1, rows - 1)] - samples[std::max(i - 1, 0)]));
     for (int c = 0; c < columns; ++c) {
       const int k = c - kRight;
       offset[static_cast<std::size_t>(i * columns + c)] = k * h;
-      position[static_cast<std::size_t>(i * columns + c)] = samples[static_cast<std::size_t>(i)] + perp(tangent) * (k * h);
+      position[static_cast<std::size_t>(i * columns + c)] = samples[static_cast<std::size_t>(i)] + normal[static_cast<std::size_t>(i)] * (k * h);
     }
   }
-  position[static_cast<std::size_t>(start)] = ends[0];
-  position[static_cast<std::size_t>(goal)] = ends[1];
 
   // The thesis examines each node's 150 nearest nodes. The nodes form a lattice of spacing h,
   // so those are (up to the lattice's bending) the nearest lattice steps: no k-d tree needed.
   const std::vector<std::pair<int, int>> steps = latticeSteps(options.neighbours, rows - 1, columns - 1);
   double stepReach = h;
   for (auto [di, dk] : steps) stepReach = std::max(stepReach, h * std::sqrt(double(di * di + dk * dk)));
-  const std::vector<int> startNearest = nearestNodes(ends[0], position, lattice, options.neighbours);
-  const std::vector<int> goalNearest = nearestNodes(ends[1], position, lattice, options.neighbours);
-  double endReach = 0.0;
-  if (!startNearest.empty()) endReach = distance(ends[0], position[static_cast<std::size_t>(startNearest.back())]);
-  if (!goalNearest.empty())
-    endReach = std::max(endReach, distance(ends[1], position[static_cast<std::size_t>(goalNearest.back())]));
+  auto nearestReach = [&](const std::vector<int>& nearest, Vec2 end) {
+    return nearest.empty() ? 0.0 : distance(end, position[static_cast<std::size_t>(nearest.back())]);
+  };
+  std::vector<int> startNearest = nearestNodes(ends[0], position, lattice, options.neighbours);
+  std::vector<int> goalNearest = nearestNodes(ends[1], position, lattice, options.neighbours);
+  const double endReach = std::max(nearestReach(startNearest, ends[0]), nearestReach(goalNearest, ends[1]));
 
   Box box;
-  for (Vec2 p : position) box.add(p);
+  for (int n = 0; n < lattice; ++n) box.add(position[static_cast<std::size_t>(n)]);
+  box.add(ends[0]);
+  box.add(ends[1]);
   const double reach = 0.5 * std::max(stepReach, endReach) + h;
   box.add(box.min - Vec2{reach + 2 * h, reach + 2 * h});
   box.add(box.max + Vec2{reach + 2 * h, reach + 2 * h});
   const FreeSpaceMap map(occupied, freeSpace, box, reach);
+
+  // A streamline extended to its blob ends on a boundary, so a shifted end may lie on or just
+  // beyond it: such an end slides back along the streamline (same normal offset) by up to
+  // 2 g_limit until it is free. The pipeline re-extends the result to the blob anyway.
+  for (int e = 0; e < 2; ++e) {
+    if (map.isFree(ends[e])) continue;
+    const int endRow = e == 0 ? 0 : rows - 1;
+    const double shift = dot(ends[e] - samples[static_cast<std::size_t>(endRow)], normal[static_cast<std::size_t>(endRow)]);
+    for (int r = 1; r <= std::min(rows - 1, 8); ++r) {
+      const std::size_t row = static_cast<std::size_t>(e == 0 ? r : rows - 1 - r);
+      const Vec2 candidate = samples[row] + normal[row] * shift;
+      if (map.isFree(candidate)) {
+        ends[e] = candidate;
+        (e == 0 ? startNearest : goalNearest) = nearestNodes(candidate, position, lattice, options.neighbours);
+        break;
+      }
+    }
+  }
+  position[static_cast<std::size_t>(start)] = ends[0];
+  position[static_cast<std::size_t>(goal)] = ends[1];
+  // Edges to or from an end longer than 2 reach fail the clearance test: conservative only.
+  const double endLinks = std::max(nearestReach(startNearest, ends[0]), nearestReach(goalNearest, ends[1]));
 
   const std::size_t nodeCount = position.size();
   std::vector<char> usable(nodeCount);
@@ -307,7 +330,7 @@ Polyline shiftStreamline(const Polyline& streamline, const VectorField& field, c
   for (int n = 0; n < lattice; ++n)
     if (distance(position[static_cast<std::size_t>(n)], ends[1]) <= stepReach) reachesGoal[static_cast<std::size_t>(n)] = 1;
   std::vector<int> startEdges = startNearest;
-  if (distance(ends[0], ends[1]) <= endReach) startEdges.push_back(goal);
+  if (distance(ends[0], ends[1]) <= endLinks) startEdges.push_back(goal);
 
   // The field's sense along this streamline (a 1-RoSy field may run against how it was stored).
   double sense = 0.0;

@@ -202,6 +202,26 @@ TEST(StreamlineShift, FewOrManyNeighboursBothGiveValidPaths) {
   EXPECT_EQ(shiftStreamline(line, field, occupied, {}, 2.0, 2.0, two), line);
 }
 
+TEST(StreamlineShift, EndsOnTheFreeSpaceBoundarySlideBackInside) {
+  // A streamline extended to its blob ends on the boundary; its shifted ends (1 up: room 5 above,
+  // 3 below) lie on the boundary too, so they slide back along the streamline until free.
+  const VectorField field = uniformField({1, 0});
+  const Polyline line = straightLine(10, 1);
+  const Region freeSpace = rect(0, -3, 10, 5);
+  ShiftOptions options;
+  const Polyline path = shiftStreamline(line, field, {}, freeSpace, 2.0, 2.0, options);
+  ASSERT_GE(path.size(), 2u);
+  EXPECT_NE(path, line);
+  EXPECT_GT(path.front().x, 0.0);
+  EXPECT_LE(path.front().x, 2 * options.limit);
+  EXPECT_NEAR(path.front().y, 1.0, 1e-9);
+  EXPECT_LT(path.back().x, 10.0);
+  EXPECT_GE(path.back().x, 10.0 - 2 * options.limit);
+  EXPECT_NEAR(path.back().y, 1.0, 1e-9);
+  for (Vec2 p : path) EXPECT_TRUE(pointInRegion(p, freeSpace)) << p.x << "," << p.y;
+  expectMonotoneInX(path);
+}
+
 TEST(StreamlineShift, ReturnsTheOriginalWhenNoPathExists) {
   const VectorField field = uniformField({1, 0});
   const Polyline line = straightLine(10, 1);
