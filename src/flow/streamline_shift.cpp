@@ -4,6 +4,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <numbers>
 #include <queue>
 #include <utility>
 
@@ -418,7 +419,8 @@ Polyline shiftStreamline(const Polyline& streamline, const VectorField& field, c
   // and the node path itself (whose edges were checked) is the last resort.
   double tolerance = options.fitTolerance > 0.0 ? options.fitTolerance : 0.25 * limit;
   for (int attempt = 0; attempt < 3; ++attempt, tolerance *= 0.5) {
-    Polyline smooth = flatten(fitCubicBeziers(path, tolerance), 0.25 * tolerance);
+    // The path turns by less than 90° at every node, so a 90° corner angle smooths it all.
+    Polyline smooth = flatten(fitCubicBeziers(path, tolerance, 0.5 * std::numbers::pi), 0.25 * tolerance);
     if (staysFree(smooth, map)) return smooth;
   }
   return path;

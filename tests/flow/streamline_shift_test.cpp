@@ -48,6 +48,16 @@ Polyline straightLine(double length, double spacing) {
   return line;
 }
 
+// Largest turn between consecutive segments, in radians.
+double maxTurn(const Polyline& path) {
+  double worst = 0.0;
+  for (std::size_t i = 2; i < path.size(); ++i) {
+    const Vec2 a = path[i - 1] - path[i - 2], b = path[i] - path[i - 1];
+    worst = std::max(worst, std::abs(std::atan2(cross(a, b), dot(a, b))));
+  }
+  return worst;
+}
+
 // The path's x never decreases (no back-tracking in a +x field), up to rounding.
 void expectMonotoneInX(const Polyline& path) {
   for (std::size_t i = 1; i < path.size(); ++i) EXPECT_GE(path[i].x, path[i - 1].x - 1e-9) << "at " << i;
@@ -127,6 +137,7 @@ TEST(StreamlineShift, OccupiedSpaceOnTheLeftPushesTheStreamlineRightAndIsAvoided
       EXPECT_LT(p.y, -0.5);
     }
   expectMonotoneInX(path);
+  EXPECT_LT(maxTurn(path), 0.5);  // smoothed: no sharp lattice zig-zag around the bump
 }
 
 TEST(StreamlineShift, CurvedStreamlineInACircularFieldStaysInItsAnnulus) {
