@@ -20,6 +20,8 @@ namespace pak {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
+constexpr int kMaxOffsetSteps = 40;        // 10 g_limit to each side
+constexpr double kMaxNodes = 4'000'000.0;  // refuses absurd streamline / limit ratios
 
 bool finite(Vec2 p) { return std::isfinite(p.x) && std::isfinite(p.y); }
 
@@ -225,9 +227,15 @@ Polyline shiftStreamline(const Polyline& streamline, const VectorField& field, c
   const double h = 0.25 * limit;
   const Polyline samples = resamplePolyline(streamline, h);
   const int rows = static_cast<int>(samples.size());
-  const int kRight = static_cast<int>(std::floor(maxRight / h + 1e-9));
-  const int kLeft = static_cast<int>(std::floor(maxLeft / h + 1e-9));
+  // Offsets beyond 10 g_limit are capped: there eq. 3.2's distance term alone (w_d D / g_limit
+  // per step, ≥ 1 with w_d = 0.1) outweighs the largest field term, so paths do not go there
+  // unless forced, and a very wide blob would otherwise make the graph huge.
+  const double widest = kMaxOffsetSteps * h;
+  const int kRight = static_cast<int>(std::floor(std::min(maxRight, widest) / h + 1e-9));
+  const int kLeft = static_cast<int>(std::floor(std::min(maxLeft, widest) / h + 1e-9));
   const int columns = kLeft + kRight + 1;
+  if (static_cast<double>(rows) * columns > kMaxNodes)
+    throw InputError("", "streamline is too long for its shift limit (node graph over 4 million nodes)");
   std::array<Vec2, 2> ends = shiftedEndpoints(streamline, occupied, freeSpace, limit);
 
   const int lattice = rows * columns;

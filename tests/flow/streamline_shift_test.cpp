@@ -233,6 +233,21 @@ TEST(StreamlineShift, EndsOnTheFreeSpaceBoundarySlideBackInside) {
   expectMonotoneInX(path);
 }
 
+TEST(StreamlineShift, VeryWideBlobsAreCappedAtTenLimits) {
+  const VectorField field = uniformField({1, 0});
+  const Polyline line = straightLine(20, 1);
+  // A wall 12 limits to the left cannot be reached: the graph stops at 10 limits.
+  const Region occupied = unite(rect(8, -0.5, 12, 30), rect(-5, 12, 25, 30));
+  const Polyline path = shiftStreamline(line, field, occupied, {}, 1000.0, 1000.0, ShiftOptions{});
+  ASSERT_GE(path.size(), 2u);
+  EXPECT_NE(path, line);
+  for (Vec2 p : path) {
+    EXPECT_FALSE(pointInRegion(p, occupied));
+    EXPECT_LE(std::abs(p.y), 10.25);
+  }
+  expectMonotoneInX(path);
+}
+
 TEST(StreamlineShift, ReturnsTheOriginalWhenNoPathExists) {
   const VectorField field = uniformField({1, 0});
   const Polyline line = straightLine(10, 1);
