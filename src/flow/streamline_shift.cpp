@@ -184,6 +184,155 @@ bool staysFree(const Polyline& line, const FreeSpaceMap& map) {
   return true;
 }
 
+
+// The node graph of thesis 3.3.6 (Figure 3.6): `rows` samples of the streamline, h apart, each
+// offset across it by `columns` multiples of h (lattice node i·columns + c), then the start and
+// goal nodes (the shifted endpoints).
+struct NodeGraph {
+  double h = 0.0;
+  int rows = 0, columns = 0, kRight = 0;
+  Polyline samples;
+  std::vector<Vec2> normals;     // left normal per row
+  std::vector<Vec2> position;    // lattice nodes, then start, then goal
+  std::vector<char> usable;      // in free space
+  std::vector<double> clearance; // distance to forbidden space, capped (FreeSpaceMap)
+  std::vector<double> toOriginal;// D(s_i, p) of eq. 3.2
+  int lattice() const { return rows * columns; }
+  int start() const { return lattice(); }
+  int goal() const { return lattice() + 1; }
+  double offsetOf(int n) const { return (n % columns - kRight) * h; }
+};
+
+// D(s_i, p) of eq. 3.2 for the usable lattice nodes: distance to the original streamline (its
+// resampling). A local search outward from the node's own sample, until a sample is more than
+// the best distance plus one spacing away (exact unless the streamline curls back that close).
+void computeDistancesToOriginal(NodeGraph& g, const Polyline& streamline) {
+  auto segmentDistance2 = [](Vec2 p, Vec2 a, Vec2 b) {
+    const Vec2 ab = b - a;
+    const double l2 = lengthSquared(ab);
+    const double t = l2 > 0.0 ? std::clamp(dot(p - a, ab) / l2, 0.0, 1.0) : 0.0;
+    return lengthSquared(p - (a + ab * t));
+  };
+  g.toOriginal.assign(g.position.size(), 0.0);
+  for (int n = 0; n < g.lattice(); ++n) {
+    if (!g.usable[static_cast<std::size_t>(n)]) continue;
+    const int i = n / g.columns;
+    const Vec2 p = g.position[static_cast<std::size_t>(n)];
+    double best = std::abs(g.offsetOf(n));
+    double best2 = best * best;
+    for (int dir : {-1, 1})
+      for (int j = dir < 0 ? i - 1 : i; j >= 0 && j + 1 < g.rows; j += dir) {
+        const Vec2 a = g.samples[static_cast<std::size_t>(j)], b = g.samples[static_cast<std::size_t>(j + 1)];
+        best2 = std::min(best2, segmentDistance2(p, a, b));
+        best = std::sqrt(best2);
+        if (lengthSquared(p - (dir < 0 ? a : b)) > (best + g.h) * (best + g.h)) break;
+      }
+    g.toOriginal[static_cast<std::size_t>(n)] = best;
+  }
+  for (int n : {g.start(), g.goal()})
+    g.toOriginal[static_cast<std::size_t>(n)] = closestPointOnPolyline(g.position[static_cast<std::size_t>(n)], streamline).distance;
+}
+
+// Edges out of the start node and into the goal node (they are not on the lattice).
+struct EndLinks {
+  std::vector<int> fromStart;    // node indices (the goal included when close enough)
+  std::vector<char> reachesGoal; // per node: has the goal among its neighbours
+};
+
+// Dijkstra from start to goal with edge cost eq. 3.2 and the no-back-tracking rule, as
+// label-setting on nodes: a node's predecessor is fixed when it is settled, and the rule uses
+// that predecessor (the exact search over (node, predecessor) states would multiply the graph
+// by the neighbour count). Returns the node positions from start to goal, empty if unreachable.
+Polyline cheapestPath(const NodeGraph& g, const std::vector<std::pair<int, int>>& steps, const EndLinks& links,
+                      const VectorField& field, double fieldSign, const ShiftOptions& options) {
+  const std::size_t nodeCount = g.position.size();
+  const int columns = g.columns, rows = g.rows, start = g.start(), goal = g.goal();
+  std::vector<double> cost(nodeCount, kInfinity);
+  std::vector<int> predecessor(nodeCount, -1);
+  std::vector<char> open(g.usable);  // usable and not yet settled
+  using Entry = std::pair<double, int>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;
+  cost[static_cast<std::size_t>(start)] = 0.0;
+  queue.push({0.0, start});
+  const double wf = options.fieldWeight, wd = options.distanceWeight, power = options.fieldPower;
+  const double h = g.h, limit = options.limit;
+  const bool cubic = power == 3.0;  // the thesis's p; std::pow would be a large share of the search
+  // Per column, the lattice steps that stay within the columns, as (rows, index) offsets.
+  std::vector<std::vector<std::pair<int, int>>> columnSteps(static_cast<std::size_t>(columns));
+  int maxAlong = 0;
+  for (int c = 0; c < columns; ++c)
+    for (auto [di, dk] : steps)
+      if (c + dk >= 0 && c + dk < columns) {
+        columnSteps[static_cast<std::size_t>(c)].emplace_back(di, di * columns + dk);
+        maxAlong = std::max(maxAlong, std::abs(di));
+      }
+  bool goalSettled = false;
+  while (!queue.empty()) {
+    const double pathCost = queue.top().first;
+    const int a = queue.top().second;
+    queue.pop();
+    const std::size_t ua = static_cast<std::size_t>(a);
+    if (!open[ua]) continue;
+    open[ua] = 0;
+    if (a == goal) {
+      goalSettled = true;
+      break;
+    }
+    const Vec2 pa = g.position[ua];
+    const bool hasIncoming = predecessor[ua] >= 0;
+    const Vec2 incoming = hasIncoming ? pa - g.position[static_cast<std::size_t>(predecessor[ua])] : Vec2{};
+    const Vec2 v = field.at(pa) * fieldSign;
+    const double clearanceA = g.clearance[ua];
+    // Eq. 3.2 per unit of path (see docs/flowpak-shift.md): w = |e|/h (w_f (1 - f^p) + w_d D / g_limit).
+    const double distanceTerm = wd * g.toOriginal[ua] / limit;
+    auto relax = [&](int b) {
+      const std::size_t ub = static_cast<std::size_t>(b);
+      if (!open[ub]) return;
+      const Vec2 e = g.position[ub] - pa;
+      if (hasIncoming && dot(incoming, e) <= 0.0) return;  // turning by 90° or more
+      const double len2 = lengthSquared(e), reach = clearanceA + g.clearance[ub];
+      if (len2 <= 0.0 || reach * reach < len2) return;  // the edge might cross a boundary
+      const double len = std::sqrt(len2);
+      const double f = std::clamp(dot(e, v) / len, 0.0, 1.0);
+      const double fp = cubic ? f * f * f : std::pow(f, power);
+      const double w = len / h * (wf * (1.0 - fp) + distanceTerm);
+      if (pathCost + w < cost[ub]) {
+        cost[ub] = pathCost + w;
+        predecessor[ub] = a;
+        queue.push({cost[ub], b});
+      }
+    };
+    if (a == start) {
+      for (int b : links.fromStart) relax(b);
+      continue;
+    }
+    const int i = a / columns;
+    const auto& candidates = columnSteps[static_cast<std::size_t>(a % columns)];
+    if (i >= maxAlong && i + maxAlong < rows) {
+      for (auto [di, delta] : candidates) relax(a + delta);
+    } else {
+      for (auto [di, delta] : candidates)
+        if (i + di >= 0 && i + di < rows) relax(a + delta);
+    }
+    if (links.reachesGoal[ua]) relax(goal);
+  }
+  Polyline path;
+  if (!goalSettled) return path;
+  for (int n = goal; n >= 0; n = predecessor[static_cast<std::size_t>(n)]) path.push_back(g.position[static_cast<std::size_t>(n)]);
+  std::reverse(path.begin(), path.end());
+  return path;
+}
+
+// Cubic Béziers [Sch90] through the node path, flattened. A fit that strays out of free space
+// is retried tighter, and the node path itself (whose edges were checked) is the last resort.
+Polyline smoothWithinFreeSpace(const Polyline& path, const FreeSpaceMap& map, double tolerance) {
+  for (int attempt = 0; attempt < 3; ++attempt, tolerance *= 0.5) {
+    // The path turns by less than 90° at every node, so a 90° corner angle smooths it all.
+    Polyline smooth = flatten(fitCubicBeziers(path, tolerance, 0.5 * std::numbers::pi), 0.25 * tolerance);
+    if (staysFree(smooth, map)) return smooth;
+  }
+  return path;
+}
 }  // namespace
 
 std::array<Vec2, 2> shiftedEndpoints(const Polyline& streamline, const Region& occupied, const Region& freeSpace,
@@ -224,48 +373,47 @@ Polyline shiftStreamline(const Polyline& streamline, const VectorField& field, c
   if (polylineLength(streamline) <= 0.0) return streamline;
 
   // Thesis 3.3.6: nodes every 0.25 g_limit along the streamline and across it.
-  const double h = 0.25 * limit;
-  const Polyline samples = resamplePolyline(streamline, h);
-  const int rows = static_cast<int>(samples.size());
+  NodeGraph g;
+  g.h = 0.25 * limit;
+  const double h = g.h;
+  g.samples = resamplePolyline(streamline, h);
+  g.rows = static_cast<int>(g.samples.size());
   // Offsets beyond 10 g_limit are capped: there eq. 3.2's distance term alone (w_d D / g_limit
   // per step, ≥ 1 with w_d = 0.1) outweighs the largest field term, so paths do not go there
   // unless forced, and a very wide blob would otherwise make the graph huge.
   const double widest = kMaxOffsetSteps * h;
-  const int kRight = static_cast<int>(std::floor(std::min(maxRight, widest) / h + 1e-9));
+  g.kRight = static_cast<int>(std::floor(std::min(maxRight, widest) / h + 1e-9));
   const int kLeft = static_cast<int>(std::floor(std::min(maxLeft, widest) / h + 1e-9));
-  const int columns = kLeft + kRight + 1;
-  if (static_cast<double>(rows) * columns > kMaxNodes)
+  g.columns = kLeft + g.kRight + 1;
+  if (static_cast<double>(g.rows) * g.columns > kMaxNodes)
     throw InputError("", "streamline is too long for its shift limit (node graph over 4 million nodes)");
-  std::array<Vec2, 2> ends = shiftedEndpoints(streamline, occupied, freeSpace, limit);
-
-  const int lattice = rows * columns;
-  const int start = lattice, goal = lattice + 1;
-  std::vector<Vec2> position(static_cast<std::size_t>(lattice) + 2);
-  std::vector<Vec2> normal(static_cast<std::size_t>(rows));
-  std::vector<double> offset(static_cast<std::size_t>(lattice), 0.0);  // signed, + to the left
-  for (int i = 0; i < rows; ++i) {
-    normal[static_cast<std::size_t>(i)] = perp(normalized(samples[std::min(i + 1, rows - 1)] - samples[std::max(i - 1, 0)]));
-    for (int c = 0; c < columns; ++c) {
-      const int k = c - kRight;
-      offset[static_cast<std::size_t>(i * columns + c)] = k * h;
-      position[static_cast<std::size_t>(i * columns + c)] = samples[static_cast<std::size_t>(i)] + normal[static_cast<std::size_t>(i)] * (k * h);
-    }
+  const int lattice = g.lattice();
+  g.position.resize(static_cast<std::size_t>(lattice) + 2);
+  g.normals.resize(static_cast<std::size_t>(g.rows));
+  for (int i = 0; i < g.rows; ++i) {
+    const Vec2 normal = perp(normalized(g.samples[static_cast<std::size_t>(std::min(i + 1, g.rows - 1))] -
+                                        g.samples[static_cast<std::size_t>(std::max(i - 1, 0))]));
+    g.normals[static_cast<std::size_t>(i)] = normal;
+    for (int c = 0; c < g.columns; ++c)
+      g.position[static_cast<std::size_t>(i * g.columns + c)] =
+          g.samples[static_cast<std::size_t>(i)] + normal * ((c - g.kRight) * h);
   }
+  std::array<Vec2, 2> ends = shiftedEndpoints(streamline, occupied, freeSpace, limit);
 
   // The thesis examines each node's 150 nearest nodes. The nodes form a lattice of spacing h,
   // so those are (up to the lattice's bending) the nearest lattice steps: no k-d tree needed.
-  const std::vector<std::pair<int, int>> steps = latticeSteps(options.neighbours, rows - 1, columns - 1);
+  const std::vector<std::pair<int, int>> steps = latticeSteps(options.neighbours, g.rows - 1, g.columns - 1);
   double stepReach = h;
   for (auto [di, dk] : steps) stepReach = std::max(stepReach, h * std::sqrt(double(di * di + dk * dk)));
   auto nearestReach = [&](const std::vector<int>& nearest, Vec2 end) {
-    return nearest.empty() ? 0.0 : distance(end, position[static_cast<std::size_t>(nearest.back())]);
+    return nearest.empty() ? 0.0 : distance(end, g.position[static_cast<std::size_t>(nearest.back())]);
   };
-  std::vector<int> startNearest = nearestNodes(ends[0], position, lattice, options.neighbours);
-  std::vector<int> goalNearest = nearestNodes(ends[1], position, lattice, options.neighbours);
+  std::vector<int> startNearest = nearestNodes(ends[0], g.position, lattice, options.neighbours);
+  std::vector<int> goalNearest = nearestNodes(ends[1], g.position, lattice, options.neighbours);
   const double endReach = std::max(nearestReach(startNearest, ends[0]), nearestReach(goalNearest, ends[1]));
 
   Box box;
-  for (int n = 0; n < lattice; ++n) box.add(position[static_cast<std::size_t>(n)]);
+  for (int n = 0; n < lattice; ++n) box.add(g.position[static_cast<std::size_t>(n)]);
   box.add(ends[0]);
   box.add(ends[1]);
   const double reach = 0.5 * std::max(stepReach, endReach) + h;
@@ -278,160 +426,53 @@ Polyline shiftStreamline(const Polyline& streamline, const VectorField& field, c
   // 2 g_limit until it is free. The pipeline re-extends the result to the blob anyway.
   for (int e = 0; e < 2; ++e) {
     if (map.isFree(ends[e])) continue;
-    const int endRow = e == 0 ? 0 : rows - 1;
-    const double shift = dot(ends[e] - samples[static_cast<std::size_t>(endRow)], normal[static_cast<std::size_t>(endRow)]);
-    for (int r = 1; r <= std::min(rows - 1, 8); ++r) {
-      const std::size_t row = static_cast<std::size_t>(e == 0 ? r : rows - 1 - r);
-      const Vec2 candidate = samples[row] + normal[row] * shift;
+    const std::size_t endRow = e == 0 ? 0 : static_cast<std::size_t>(g.rows - 1);
+    const double shift = dot(ends[e] - g.samples[endRow], g.normals[endRow]);
+    for (int r = 1; r <= std::min(g.rows - 1, 8); ++r) {
+      const std::size_t row = static_cast<std::size_t>(e == 0 ? r : g.rows - 1 - r);
+      const Vec2 candidate = g.samples[row] + g.normals[row] * shift;
       if (map.isFree(candidate)) {
         ends[e] = candidate;
-        (e == 0 ? startNearest : goalNearest) = nearestNodes(candidate, position, lattice, options.neighbours);
+        (e == 0 ? startNearest : goalNearest) = nearestNodes(candidate, g.position, lattice, options.neighbours);
         break;
       }
     }
   }
-  position[static_cast<std::size_t>(start)] = ends[0];
-  position[static_cast<std::size_t>(goal)] = ends[1];
-  // Edges to or from an end longer than 2 reach fail the clearance test: conservative only.
-  const double endLinks = std::max(nearestReach(startNearest, ends[0]), nearestReach(goalNearest, ends[1]));
+  g.position[static_cast<std::size_t>(g.start())] = ends[0];
+  g.position[static_cast<std::size_t>(g.goal())] = ends[1];
 
-  const std::size_t nodeCount = position.size();
-  std::vector<char> usable(nodeCount);
-  std::vector<double> clearance(nodeCount, 0.0);
+  const std::size_t nodeCount = g.position.size();
+  g.usable.resize(nodeCount);
+  g.clearance.assign(nodeCount, 0.0);
   for (std::size_t n = 0; n < nodeCount; ++n) {
-    usable[n] = map.isFree(position[n]);
-    if (usable[n]) clearance[n] = map.clearance(position[n]);
+    g.usable[n] = map.isFree(g.position[n]);
+    if (g.usable[n]) g.clearance[n] = map.clearance(g.position[n]);
   }
-  if (!usable[static_cast<std::size_t>(start)] || !usable[static_cast<std::size_t>(goal)]) return streamline;
+  if (!g.usable[static_cast<std::size_t>(g.start())] || !g.usable[static_cast<std::size_t>(g.goal())]) return streamline;
+  computeDistancesToOriginal(g, streamline);
 
-  // D(s_i, p) of eq. 3.2: distance to the original streamline (its resampling). A local
-  // search: outward from the node's own sample until a sample is more than the best distance
-  // plus one spacing away (exact for streamlines that do not curl back within that distance).
-  std::vector<double> toOriginal(nodeCount, 0.0);
-  auto segmentDistance2 = [](Vec2 p, Vec2 a, Vec2 b) {
-    const Vec2 ab = b - a;
-    const double l2 = lengthSquared(ab);
-    const double t = l2 > 0.0 ? std::clamp(dot(p - a, ab) / l2, 0.0, 1.0) : 0.0;
-    return lengthSquared(p - (a + ab * t));
-  };
-  for (int i = 0; i < rows; ++i)
-    for (int c = 0; c < columns; ++c) {
-      const std::size_t n = static_cast<std::size_t>(i * columns + c);
-      if (!usable[n]) continue;
-      const Vec2 p = position[n];
-      double best = std::abs(offset[n]);
-      double best2 = best * best;
-      for (int dir : {-1, 1})
-        for (int j = dir < 0 ? i - 1 : i; j >= 0 && j + 1 < rows; j += dir) {
-          const Vec2 a = samples[static_cast<std::size_t>(j)], b = samples[static_cast<std::size_t>(j + 1)];
-          best2 = std::min(best2, segmentDistance2(p, a, b));
-          best = std::sqrt(best2);
-          if (lengthSquared(p - (dir < 0 ? a : b)) > (best + h) * (best + h)) break;
-        }
-      toOriginal[n] = best;
-    }
-  for (int n : {start, goal})
-    toOriginal[static_cast<std::size_t>(n)] = closestPointOnPolyline(position[static_cast<std::size_t>(n)], streamline).distance;
-
-  // Lattice nodes that have the goal among their nearest nodes (or it among the goal's).
-  std::vector<char> reachesGoal(nodeCount, 0);
-  for (int n : goalNearest) reachesGoal[static_cast<std::size_t>(n)] = 1;
+  // Lattice nodes that have the goal among their nearest nodes (or it among the goal's); the
+  // start links to its nearest nodes. Links longer than 2 reach fail the clearance test
+  // (conservative only).
+  EndLinks links;
+  links.reachesGoal.assign(nodeCount, 0);
+  for (int n : goalNearest) links.reachesGoal[static_cast<std::size_t>(n)] = 1;
   for (int n = 0; n < lattice; ++n)
-    if (distance(position[static_cast<std::size_t>(n)], ends[1]) <= stepReach) reachesGoal[static_cast<std::size_t>(n)] = 1;
-  std::vector<int> startEdges = startNearest;
-  if (distance(ends[0], ends[1]) <= endLinks) startEdges.push_back(goal);
+    if (distance(g.position[static_cast<std::size_t>(n)], ends[1]) <= stepReach) links.reachesGoal[static_cast<std::size_t>(n)] = 1;
+  links.fromStart = startNearest;
+  const double endLinks = std::max(nearestReach(startNearest, ends[0]), nearestReach(goalNearest, ends[1]));
+  if (distance(ends[0], ends[1]) <= endLinks) links.fromStart.push_back(g.goal());
 
   // The field's sense along this streamline (a 1-RoSy field may run against how it was stored).
   double sense = 0.0;
-  for (int i = 0; i + 1 < rows; ++i) sense += dot(field.at(samples[i]), samples[i + 1] - samples[i]);
+  for (int i = 0; i + 1 < g.rows; ++i)
+    sense += dot(field.at(g.samples[static_cast<std::size_t>(i)]),
+                 g.samples[static_cast<std::size_t>(i + 1)] - g.samples[static_cast<std::size_t>(i)]);
   const double fieldSign = sense < 0.0 ? -1.0 : 1.0;
 
-  // Dijkstra, label-setting on nodes: a node's predecessor is fixed when it is settled, and
-  // the no-back-tracking rule uses that predecessor (the exact search over (node, predecessor)
-  // states would multiply the graph by the neighbour count).
-  std::vector<double> cost(nodeCount, kInfinity);
-  std::vector<int> predecessor(nodeCount, -1);
-  std::vector<char> open(usable);  // usable and not yet settled
-  using Entry = std::pair<double, int>;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;
-  cost[static_cast<std::size_t>(start)] = 0.0;
-  queue.push({0.0, start});
-  const double wf = options.fieldWeight, wd = options.distanceWeight, power = options.fieldPower;
-  const bool cubic = power == 3.0;  // the thesis's p; std::pow would be a large share of the search
-  // Per column, the lattice steps that stay within the columns, as index offsets.
-  std::vector<std::vector<std::pair<int, int>>> columnSteps(static_cast<std::size_t>(columns));
-  int maxAlong = 0;
-  for (int c = 0; c < columns; ++c)
-    for (auto [di, dk] : steps)
-      if (c + dk >= 0 && c + dk < columns) {
-        columnSteps[static_cast<std::size_t>(c)].emplace_back(di, di * columns + dk);
-        maxAlong = std::max(maxAlong, std::abs(di));
-      }
-  bool goalSettled = false;
-  while (!queue.empty()) {
-    const double pathCost = queue.top().first;
-    const int a = queue.top().second;
-    queue.pop();
-    const std::size_t ua = static_cast<std::size_t>(a);
-    if (!open[ua]) continue;
-    open[ua] = 0;
-    if (a == goal) {
-      goalSettled = true;
-      break;
-    }
-    const Vec2 pa = position[ua];
-    const bool hasIncoming = predecessor[ua] >= 0;
-    const Vec2 incoming = hasIncoming ? pa - position[static_cast<std::size_t>(predecessor[ua])] : Vec2{};
-    const Vec2 v = field.at(pa) * fieldSign;
-    const double clearanceA = clearance[ua];
-    // Eq. 3.2 per unit of path (see docs/flowpak-shift.md): w = |e|/h (w_f (1 - f^p) + w_d D / g_limit).
-    const double distanceTerm = wd * toOriginal[ua] / limit;
-    auto relax = [&](int b) {
-      const std::size_t ub = static_cast<std::size_t>(b);
-      if (!open[ub]) return;
-      const Vec2 e = position[ub] - pa;
-      if (hasIncoming && dot(incoming, e) <= 0.0) return;  // turning by 90° or more
-      const double len2 = lengthSquared(e), reach = clearanceA + clearance[ub];
-      if (len2 <= 0.0 || reach * reach < len2) return;  // the edge might cross a boundary
-      const double len = std::sqrt(len2);
-      const double f = std::clamp(dot(e, v) / len, 0.0, 1.0);
-      const double fp = cubic ? f * f * f : std::pow(f, power);
-      const double w = len / h * (wf * (1.0 - fp) + distanceTerm);
-      if (pathCost + w < cost[ub]) {
-        cost[ub] = pathCost + w;
-        predecessor[ub] = a;
-        queue.push({cost[ub], b});
-      }
-    };
-    if (a == start) {
-      for (int b : startEdges) relax(b);
-      continue;
-    }
-    const int i = a / columns;
-    const auto& candidates = columnSteps[static_cast<std::size_t>(a % columns)];
-    if (i >= maxAlong && i + maxAlong < rows) {
-      for (auto [di, delta] : candidates) relax(a + delta);
-    } else {
-      for (auto [di, delta] : candidates)
-        if (i + di >= 0 && i + di < rows) relax(a + delta);
-    }
-    if (reachesGoal[ua]) relax(goal);
-  }
-  if (!goalSettled) return streamline;
-
-  Polyline path;
-  for (int n = goal; n >= 0; n = predecessor[static_cast<std::size_t>(n)]) path.push_back(position[static_cast<std::size_t>(n)]);
-  std::reverse(path.begin(), path.end());
-
-  // Smooth with cubic Béziers [Sch90]; a fit that strays out of free space is retried tighter,
-  // and the node path itself (whose edges were checked) is the last resort.
-  double tolerance = options.fitTolerance > 0.0 ? options.fitTolerance : 0.25 * limit;
-  for (int attempt = 0; attempt < 3; ++attempt, tolerance *= 0.5) {
-    // The path turns by less than 90° at every node, so a 90° corner angle smooths it all.
-    Polyline smooth = flatten(fitCubicBeziers(path, tolerance, 0.5 * std::numbers::pi), 0.25 * tolerance);
-    if (staysFree(smooth, map)) return smooth;
-  }
-  return path;
+  const Polyline path = cheapestPath(g, steps, links, field, fieldSign, options);
+  if (path.empty()) return streamline;
+  return smoothWithinFreeSpace(path, map, options.fitTolerance > 0.0 ? options.fitTolerance : 0.25 * limit);
 }
 
 }  // namespace pak
