@@ -160,10 +160,10 @@ std::vector<std::pair<int, int>> latticeSteps(int count, int maxAlong, int maxAc
   return steps;
 }
 
-// The `count` nearest of the first `candidates` positions to p (ties by index).
-std::vector<int> nearestNodes(Vec2 p, const std::vector<Vec2>& positions, int candidates, int count) {
+// The `count` nearest to p of positions[first, last) (ties by index).
+std::vector<int> nearestNodes(Vec2 p, const std::vector<Vec2>& positions, int first, int last, int count) {
   std::vector<std::pair<double, int>> byDistance;
-  for (int i = 0; i < candidates; ++i)
+  for (int i = first; i < last; ++i)
     byDistance.emplace_back(lengthSquared(positions[static_cast<std::size_t>(i)] - p), i);
   const std::size_t keep = std::min(byDistance.size(), static_cast<std::size_t>(count));
   std::partial_sort(byDistance.begin(), byDistance.begin() + static_cast<std::ptrdiff_t>(keep), byDistance.end());
@@ -408,8 +408,15 @@ Polyline shiftStreamline(const Polyline& streamline, const VectorField& field, c
   auto nearestReach = [&](const std::vector<int>& nearest, Vec2 end) {
     return nearest.empty() ? 0.0 : distance(end, g.position[static_cast<std::size_t>(nearest.back())]);
   };
-  std::vector<int> startNearest = nearestNodes(ends[0], g.position, lattice, options.neighbours);
-  std::vector<int> goalNearest = nearestNodes(ends[1], g.position, lattice, options.neighbours);
+  // An end's nearest nodes are searched among the rows at its end of the lattice: enough rows
+  // to hold `neighbours` nodes, plus the 8 rows an end may slide back, plus a margin.
+  const int endRows = std::min(g.rows, (options.neighbours + g.columns - 1) / g.columns + 12);
+  auto nearestToEnd = [&](int e, Vec2 p) {
+    return e == 0 ? nearestNodes(p, g.position, 0, endRows * g.columns, options.neighbours)
+                  : nearestNodes(p, g.position, (g.rows - endRows) * g.columns, lattice, options.neighbours);
+  };
+  std::vector<int> startNearest = nearestToEnd(0, ends[0]);
+  std::vector<int> goalNearest = nearestToEnd(1, ends[1]);
   const double endReach = std::max(nearestReach(startNearest, ends[0]), nearestReach(goalNearest, ends[1]));
 
   Box box;
@@ -433,7 +440,7 @@ Polyline shiftStreamline(const Polyline& streamline, const VectorField& field, c
       const Vec2 candidate = g.samples[row] + g.normals[row] * shift;
       if (map.isFree(candidate)) {
         ends[e] = candidate;
-        (e == 0 ? startNearest : goalNearest) = nearestNodes(candidate, g.position, lattice, options.neighbours);
+        (e == 0 ? startNearest : goalNearest) = nearestToEnd(e, candidate);
         break;
       }
     }
