@@ -19,7 +19,7 @@ struct ShiftOptions {
 
 // New endpoints: each endpoint moves toward the midpoint of the segment joining the points
 // where its left and right perpendiculars meet `occupied` (the other placed elements) or
-// leave `freeSpace`, by at most `limit`.
+// leave `freeSpace`, by at most `limit`. Each ray stops at 10 `limit` when it meets nothing.
 std::array<Vec2, 2> shiftedEndpoints(const Polyline& streamline, const Region& occupied,
                                      const Region& freeSpace, double limit);
 
@@ -27,7 +27,12 @@ std::array<Vec2, 2> shiftedEndpoints(const Polyline& streamline, const Region& o
 // between the shifted endpoints over nodes made by resampling the streamline every limit/4
 // and offsetting the samples left and right by multiples of limit/4 up to maxLeft / maxRight
 // (the blob's widest extents), then fitted with cubic Béziers [Sch90] and flattened.
-// Returns the original when no path exists.
+// A shifted end that is not in free space (e.g. on the blob boundary the streamline was
+// extended to) slides back along the streamline by up to 2 limit until it is; the caller
+// re-extends the result. Returns the original when no path exists.
+// An empty `freeSpace` means "no outer bound" (only `occupied` is avoided). No point or edge
+// of a shifted result lies inside `occupied` or outside a non-empty `freeSpace`.
+// Throws InputError for an empty streamline, non-finite input or invalid options.
 Polyline shiftStreamline(const Polyline& streamline, const VectorField& field, const Region& occupied,
                          const Region& freeSpace, double maxLeft, double maxRight,
                          const ShiftOptions& options);
