@@ -12,19 +12,6 @@
 
 namespace pak {
 
-// Test-only stand-in for the field helper's VectorField::at (bilinear, clamped, renormalised),
-// weak so that the real definition wins as soon as it is linked in.
-__attribute__((weak)) Vec2 VectorField::at(Vec2 p) const {
-  const double fx = std::clamp((p.x - origin.x) / cell - 0.5, 0.0, nx - 1.0);
-  const double fy = std::clamp((p.y - origin.y) / cell - 0.5, 0.0, ny - 1.0);
-  const int i = std::min(static_cast<int>(fx), nx - 2 < 0 ? 0 : nx - 2);
-  const int j = std::min(static_cast<int>(fy), ny - 2 < 0 ? 0 : ny - 2);
-  const double tx = fx - i, ty = fy - j;
-  auto v = [&](int a, int b) { return values[static_cast<std::size_t>(std::min(b, ny - 1) * nx + std::min(a, nx - 1))]; };
-  return normalized(v(i, j) * ((1 - tx) * (1 - ty)) + v(i + 1, j) * (tx * (1 - ty)) + v(i, j + 1) * ((1 - tx) * ty) +
-                    v(i + 1, j + 1) * (tx * ty));
-}
-
 namespace {
 
 VectorField uniformField(Vec2 direction) {
