@@ -229,9 +229,10 @@ void FlowPacker::packContainer(int k) {
   lineOptions.maxLength = options_.maxLength;
   lineOptions.sampleSpacing = options_.sampleSpacing;
   lineOptions.seed = options_.seed + static_cast<std::uint64_t>(k);
+  // Streamlines run where art may go (the free space inset by spacing / 2), so those seeded on
+  // the boundary, which line the container, can carry an element.
   StreamlineInput input;
-  input.container = region;
-  input.obstacles = packing_.fixedArt;
+  input.container = intersect(region, freeShrunk_);
   input.guides = guides;
   input.fixedStreamlines = spines;
   std::vector<Polyline> lines = traceStreamlines(field, input, lineOptions);
