@@ -23,10 +23,10 @@ namespace pak {
 
 struct FlowOptions {
   // --- streamlines (3.3.3)
-  double gap = 60.0;          // s_gap: desired space between streamlines, about an element's width
+  double gap = 45.0;          // s_gap: desired space between streamlines, about an element's width
   double stopRatio = 0.8;     // s_stop = stopRatio × s_gap
-  double minLength = 80.0;    // s_min
-  double maxLength = 300.0;   // s_max
+  double minLength = 60.0;    // s_min
+  double maxLength = 250.0;   // s_max
   double sampleSpacing = 5.0; // guide, boundary and streamline sampling (0.005 l_canvas)
   int fieldResolution = 256;  // vector field grid cells along the longer side
   // --- blobs and placement (3.3.4, 3.3.5)
