@@ -56,12 +56,15 @@ const IntegerOption kIntegerOptions[] = {
     {"shift-neighbours", &FlowOptions::shiftNeighbours, "nearest nodes examined from each node when shifting a streamline"},
 };
 
+// --smooth: how far the written Bézier outlines may stray from the bent polygons (canonical units).
+constexpr double kSmoothTolerance = 0.4;
+
 struct FlowArguments {
   std::string scene;
   std::vector<std::string> elements;
   std::string output, png, config, report, snapshots, mirror;
   int pngWidth = 1200;
-  bool quiet = false, debugLayers = false, fillGaps = false;
+  bool quiet = false, debugLayers = false, fillGaps = false, smooth = false;
   std::uint64_t seed = 1;
   FlowOptions options;
   CLI::App* command = nullptr;
@@ -100,6 +103,11 @@ void applyConfig(FlowArguments& args) {
     if (key == "fill-gaps") {
       if (!value.is_boolean()) throw InputError(args.config, "\"fill-gaps\" must be true or false");
       args.fillGaps = value.get<bool>();
+      known = true;
+    }
+    if (key == "smooth") {
+      if (!value.is_boolean()) throw InputError(args.config, "\"smooth\" must be true or false");
+      args.smooth = value.get<bool>();
       known = true;
     }
     if (key == "mirror") {
@@ -159,7 +167,9 @@ int runFlow(FlowArguments& args) {
   FlowDrawingOptions drawingOptions;
   drawingOptions.debugLayers = args.debugLayers;
   Drawing drawing = flowDrawing(scene, packing, drawingOptions);
-  writeSvgFile(drawing, args.output);
+  SvgWriteOptions svgOptions;
+  if (args.smooth) svgOptions.curveTolerance = kSmoothTolerance / packing.canonicalScale;
+  writeSvgFile(drawing, args.output, svgOptions);
   if (!args.png.empty()) {
     PngOptions png;
     png.width = args.pngWidth;
@@ -191,6 +201,7 @@ int runFlow(FlowArguments& args) {
     parameters["seed"] = args.seed;
     parameters["fill-gaps"] = args.fillGaps;
     parameters["mirror"] = args.mirror;
+    parameters["smooth"] = args.smooth;
     nlohmann::json report;
     report["parameters"] = parameters;
     report["units"] = "distances in canonical units: l_canvas (the larger side of the containers' and fixed elements' bounds) is 1000";
@@ -245,6 +256,9 @@ const CommandRegistrar registrar{{"flow", [](CLI::App& app) {
   for (const auto& o : kNumberOptions) cmd->add_option(std::string("--") + o.name, args->options.*o.field, o.help)->capture_default_str();
   for (const auto& o : kIntegerOptions) cmd->add_option(std::string("--") + o.name, args->options.*o.field, o.help)->capture_default_str();
   cmd->add_flag("--fill-gaps", args->fillGaps, "add shapes made from the negative space between the elements (thesis Fig. 3.15)");
+  cmd->add_flag("--smooth", args->smooth,
+                "write outlines as cubic Béziers fitted within 0.4 canonical units instead of polygons (thesis 3.4's "
+                "post-process): smaller files, easier to edit");
   cmd->add_option("--mirror", args->mirror,
                   "x=VALUE: pack the part of the scene left of the vertical line x = VALUE (input units) and reflect it "
                   "(thesis Fig. 3.13)");

@@ -8,6 +8,10 @@ namespace pak {
 
 struct SvgWriteOptions {
   int precision = 3;  // decimals for coordinates
+  // > 0: every subpath of 3 or more points is written as cubic Béziers fitted within this
+  // distance (input units; Schneider's method, sharp corners kept) instead of line segments:
+  // smooth outlines that are easy to edit.
+  double curveTolerance = 0.0;
 };
 
 std::string toSvgString(const Drawing& drawing, const SvgWriteOptions& = {});

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "pak/atomic_file.hpp"
+#include "pak/bezier_fit.hpp"
 #include "pak/error.hpp"
 
 namespace pak {
@@ -79,16 +80,22 @@ std::string hexColor(const Color& color) {
 // Opacities with three decimals are finer than 8-bit colour; clamp to SVG's [0, 1].
 std::string formatOpacity(double opacity) { return formatNumber(std::clamp(opacity, 0.0, 1.0), 3); }
 
-std::string pathData(const Shape& shape, int precision) {
+std::string pathData(const Shape& shape, int precision, double curveTolerance) {
   std::string d;
+  auto point = [&](Vec2 p) { return formatNumber(p.x, precision) + ',' + formatNumber(p.y, precision); };
   for (const Subpath& subpath : shape.subpaths) {
     if (subpath.points.empty()) continue;
     if (!d.empty()) d += ' ';
-    for (std::size_t i = 0; i < subpath.points.size(); ++i) {
-      d += i == 0 ? "M" : (i == 1 ? " L" : " ");
-      d += formatNumber(subpath.points[i].x, precision);
-      d += ',';
-      d += formatNumber(subpath.points[i].y, precision);
+    if (curveTolerance > 0.0 && subpath.points.size() >= 3) {
+      std::vector<CubicBezier> curves = subpath.closed ? fitCubicBeziersClosed(subpath.points, curveTolerance)
+                                                       : fitCubicBeziers(subpath.points, curveTolerance);
+      d += "M" + point(curves.front()[0]);
+      for (const CubicBezier& c : curves) d += " C" + point(c[1]) + ' ' + point(c[2]) + ' ' + point(c[3]);
+    } else {
+      for (std::size_t i = 0; i < subpath.points.size(); ++i) {
+        d += i == 0 ? "M" : (i == 1 ? " L" : " ");
+        d += point(subpath.points[i]);
+      }
     }
     if (subpath.closed) d += " Z";
   }
@@ -97,7 +104,7 @@ std::string pathData(const Shape& shape, int precision) {
 
 class SvgBuilder {
  public:
-  explicit SvgBuilder(int precision) : precision_(precision) {}
+  SvgBuilder(int precision, double curveTolerance) : precision_(precision), curveTolerance_(curveTolerance) {}
 
   void writeGroup(const DrawingGroup& group, int depth) {
     std::string clipId;
@@ -139,7 +146,7 @@ class SvgBuilder {
   }
 
   void writeShape(const Shape& shape, int depth) {
-    std::string d = pathData(shape, precision_);
+    std::string d = pathData(shape, precision_, curveTolerance_);
     if (d.empty()) return;  // nothing to draw; an empty d is an SVG error
     indent(depth);
     out_ += "<path";
@@ -174,6 +181,7 @@ class SvgBuilder {
 
  private:
   int precision_;
+  double curveTolerance_;
   int clipCount_ = 0;
   std::string out_;
 };
@@ -204,7 +212,8 @@ std::string toSvgString(const Drawing& drawing, const SvgWriteOptions& options) 
   double width = drawing.width > 0.0 ? drawing.width : boxWidth;
   double height = drawing.height > 0.0 ? drawing.height : boxHeight;
 
-  SvgBuilder builder(precision);
+  const double curveTolerance = std::isfinite(options.curveTolerance) ? std::max(0.0, options.curveTolerance) : 0.0;
+  SvgBuilder builder(precision, curveTolerance);
   std::string& out = builder.text();
   out += "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"no\"?>\n";
   out += "<svg xmlns=\"http://www.w3.org/2000/svg\"";

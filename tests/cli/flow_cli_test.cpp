@@ -41,9 +41,12 @@ TEST(CliFlow, KoiIsPackedWithoutOverlapsAndReported) {
 
 TEST(CliFlow, MedallionKeepsItsFixedSunAndFixedSpinesAndIsDeterministic) {
   ScratchFolder dir("cli-flow-medallion");
-  std::string common = "flow examples/flow/medallion.svg -e examples/flow/elements" + kQuick + " --seed 3";
+  std::string common = "flow examples/flow/medallion.svg -e examples/flow/elements" + kQuick + " --gap 80 --seed 3";
   PakRun a = runPak(common + " -o " + shellQuoted(dir.file("a.svg")) + " --report " + shellQuoted(dir.file("a.json")));
   PakRun b = runPak(common + " -o " + shellQuoted(dir.file("b.svg")));
+  PakRun smooth = runPak(common + " --smooth -o " + shellQuoted(dir.file("c.svg")));
+  ASSERT_EQ(smooth.exitCode, 0) << smooth.err;
+  EXPECT_NE(readWholeFile(dir.file("c.svg")).find(" C"), std::string::npos);
   ASSERT_EQ(a.exitCode, 0) << a.err;
   ASSERT_EQ(b.exitCode, 0) << b.err;
   EXPECT_EQ(readWholeFile(dir.file("a.svg")), readWholeFile(dir.file("b.svg")));

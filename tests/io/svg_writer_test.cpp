@@ -339,3 +339,34 @@ TEST(SvgWriterRoundTrip, EscapedIdsComeBackUnchanged) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(SvgWriter, CurveToleranceWritesCubicBeziersThatReadBackAsTheSameShape) {
+  pak::Drawing drawing;
+  drawing.viewBox = {{0, 0}, {100, 100}};
+  pak::DrawingGroup group;
+  group.id = "elements";
+  pak::Shape disc;
+  pak::Subpath ring;
+  ring.closed = true;
+  for (int k = 0; k < 400; ++k)
+    ring.points.push_back({50 + 40 * std::cos(2 * M_PI * k / 400), 50 + 40 * std::sin(2 * M_PI * k / 400)});
+  disc.subpaths.push_back(ring);
+  disc.fill = pak::Color{10, 20, 30, 1.0};
+  group.shapes.push_back(disc);
+  drawing.groups.push_back(group);
+  pak::SvgWriteOptions options;
+  options.curveTolerance = 0.05;
+  std::string svg = pak::toSvgString(drawing, options);
+  EXPECT_NE(svg.find(" C"), std::string::npos);
+  EXPECT_EQ(svg.find(" L"), std::string::npos);
+  EXPECT_LT(svg.size(), pak::toSvgString(drawing).size() / 4);  // far fewer numbers than 400 vertices
+  pak::SvgDocument back = pak::readSvgString(svg, "curves.svg");
+  ASSERT_EQ(back.shapes.size(), 1u);
+  // Every flattened point of the curves lies within the tolerance (plus flattening) of the circle.
+  for (const pak::Subpath& sub : back.shapes[0].subpaths)
+    for (pak::Vec2 p : sub.points) EXPECT_NEAR(pak::distance(p, {50, 50}), 40.0, 0.15);
+}
+
+}  // namespace
