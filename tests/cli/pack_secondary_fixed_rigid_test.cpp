@@ -163,3 +163,17 @@ TEST(CliPackFixed, InkscapeFixedLayerIsCopiedByteForByteAndNeverOverlapped) {
   PakRun render = runPak("render " + shellQuoted(out) + " -o " + shellQuoted(dir.file("out.png")) + " --width 200");
   EXPECT_EQ(render.exitCode, 0) << render.err;
 }
+
+// This run used to end with the cat's art 1 unit² past the fish's wall: its skin vertices
+// rested slightly outside, where the penalty boundary force balances its neighbours. A run
+// whose art does not check clean gets its outside vertices projected onto the wall.
+TEST(CliPackFixed, OutsideVerticesAreProjectedBackWhenTheArtIsNotClean) {
+  ScratchFolder dir("cli-pack-fixed-project");
+  PakRun run = runPak("pack -c examples/fixed-scene.svg -e examples/elements --count 8 --seed 1 -q -o " +
+                      shellQuoted(dir.file("out.svg")) + " --report " + shellQuoted(dir.file("r.json")));
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  auto report = nlohmann::json::parse(readWholeFile(dir.file("r.json")));
+  EXPECT_EQ(report["elements-outside"], 0) << report["problems"];
+  EXPECT_EQ(report["overlap-count"], 0) << report["problems"];
+  EXPECT_EQ(report["iterations"], 1599);  // the projection is not a simulation step
+}
