@@ -8,6 +8,7 @@
 
 #include "pak/art.hpp"
 #include "pak/box.hpp"
+#include "pak/raw_markup.hpp"
 
 namespace pak {
 
@@ -18,6 +19,8 @@ struct DrawingGroup {
   std::vector<Shape> shapes;
   std::vector<DrawingGroup> children;
   std::optional<Box> clip = std::nullopt;  // draw only inside this box (an SVG clipPath), e.g. a tile
+  // The SVG writer writes this instead of `shapes` (the PNG renderer still draws `shapes`).
+  std::optional<RawMarkup> markup = std::nullopt;
 };
 
 struct Drawing {

@@ -8,6 +8,7 @@
 
 #include "pak/art.hpp"
 #include "pak/polygon.hpp"
+#include "pak/raw_markup.hpp"
 
 namespace pak {
 
@@ -28,7 +29,9 @@ struct Scene {
   // element of a previous packing): every element stays in the one it was seeded in.
   // Empty: each polygon of `container` is one container, filled from the run's library.
   std::vector<ContainerPart> containers;
-  std::vector<Shape> fixed;         // fixed elements: copied to the output, obstacles
+  std::vector<Shape> fixed;         // fixed elements: obstacles, and drawn in the output
+  RawMarkup fixedMarkup;            // the `fixed` layer as written (SVG input): the output copies
+                                    // it unchanged; empty: the output re-draws `fixed`
   std::vector<Polyline> guides;     // FLOWPAK direction strokes
   std::vector<Polyline> spines;     // FLOWPAK fixed spines
   std::vector<Warning> warnings;

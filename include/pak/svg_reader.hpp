@@ -21,6 +21,9 @@ struct SvgDocument {
   std::vector<std::string> layers;   // names of the layers found, lower-cased, in order
   std::vector<Shape> shapes;         // in document order, in viewBox coordinates
   std::vector<Warning> warnings;     // things skipped and why
+  // The visible `fixed` layers' children as written, for outputs to copy unchanged; empty when
+  // there is none or when a stylesheet styles them (outputs then re-draw `shapes`).
+  RawMarkup fixedMarkup;
 };
 
 // Throws InputError for an unreadable file, non-XML, XML that is not SVG, or bad numbers.

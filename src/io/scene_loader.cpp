@@ -133,6 +133,7 @@ Scene sceneFromDocument(const SvgDocument& document, const SceneOptions& sceneOp
   scene.width = document.width;
   scene.height = document.height;
   scene.warnings = document.warnings;
+  scene.fixedMarkup = document.fixedMarkup;
 
   const Box box = document.viewBox.empty() ? bounds(document.shapes) : document.viewBox;
   const ClipOptions clip = clipOptionsFor(box);

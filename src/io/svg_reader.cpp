@@ -13,13 +13,16 @@
 #include <svgpp/svgpp.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <string>
 #include <string_view>
@@ -161,6 +164,14 @@ struct Gradient {
   std::vector<GradientStop> stops;
 };
 
+// A visible `fixed` layer group, to copy as written: the transform and the opacity its
+// ancestors give it (its own transform included).
+struct FixedLayerSource {
+  const XmlNode* node = nullptr;
+  Affine ctm;
+  double inheritedOpacity = 1.0;
+};
+
 // Everything one reading shares between the element contexts.
 struct ReaderState {
   std::string file;
@@ -173,6 +184,7 @@ struct ReaderState {
   std::optional<Box> viewBox;
   std::optional<double> width, height;
   int topLevelGroups = 0;
+  std::vector<FixedLayerSource> fixedLayers;
 
   void warn(const std::string& where, const std::string& message) {
     document->warnings.push_back({file + (where.empty() ? "" : ": " + where), message});
@@ -348,7 +360,9 @@ class NodeContext {
   NodeContext& operator=(const NodeContext&) = delete;
 
   const length_factory_type& length_factory() const { return state_->lengths; }
-  void on_exit_element() {}
+  void on_exit_element() {
+    if (fixedLayer_ && !hidden() && !nonRendered_) state_->fixedLayers.push_back({node_, ctm(), inheritedOpacity_});
+  }
   template <class Range>
   void set_text(const Range&) {}
 
@@ -489,6 +503,7 @@ class NodeContext {
   bool isLayerGroup_ = false; // this group names the layer: its child groups are numbered
   int childGroups_ = 0;
   bool isRoot_ = false;
+  bool fixedLayer_ = false;   // the outermost group of a `fixed` layer
   std::string elements_;      // see Shape::elements
 
  private:
@@ -505,6 +520,7 @@ class NodeContext {
     const bool known = isKnownLayerName(name);
     if (known || layer_.empty()) {
       if (known || !layerKnown_) {
+        fixedLayer_ = name == "fixed" && layer_ != "fixed";
         layer_ = name;
         layerKnown_ = known;
         isLayerGroup_ = true;
@@ -1075,6 +1091,189 @@ class CurrentReaderScope {
   ReaderState* previous_;
 };
 
+
+// ---------------------------------------------------------------------------------------
+// The fixed layer, copied byte for byte. rapidxml parses in place, so a name or value it
+// points at sits at the same offset in the source text as in its buffer; the source text
+// around it is scanned for the element's extent (the document parsed, so it is well formed).
+struct SourceText {
+  const std::string& text;
+  const std::vector<char>& buffer;
+
+  // Offset in the source of a pointer into the buffer; npos for strings rapidxml or the
+  // stylesheet pass made elsewhere (those are not the source's bytes).
+  std::size_t offsetOf(const char* p) const {
+    if (p < buffer.data() || p >= buffer.data() + text.size()) return std::string::npos;
+    return static_cast<std::size_t>(p - buffer.data());
+  }
+
+  // Just past the '>' of the tag starting at `at` (quoted values may hold '>').
+  std::size_t tagEnd(std::size_t at) const {
+    char quote = 0;
+    for (std::size_t i = at + 1; i < text.size(); ++i) {
+      const char c = text[i];
+      if (quote) { if (c == quote) quote = 0; }
+      else if (c == '"' || c == '\'') quote = c;
+      else if (c == '>') return i + 1;
+    }
+    return text.size();
+  }
+
+  // [start of the element's tag, end of its start tag, start of its end tag, end of the element].
+  std::array<std::size_t, 4> extent(const XmlNode* node) const {
+    const std::size_t name = offsetOf(node->name());
+    if (name == std::string::npos || name == 0) return {0, 0, 0, 0};
+    const std::size_t start = name - 1, open = tagEnd(start);
+    if (text[open - 2] == '/') return {start, open, open, open};
+    std::size_t i = open;
+    for (int depth = 1; i < text.size();) {
+      i = text.find('<', i);
+      if (i == std::string::npos) break;
+      auto skipPast = [&](const char* end) {
+        const std::size_t at = text.find(end, i);
+        return at == std::string::npos ? text.size() : at + std::strlen(end);
+      };
+      if (text.compare(i, 4, "<!--") == 0) i = skipPast("-->");
+      else if (text.compare(i, 9, "<![CDATA[") == 0) i = skipPast("]]>");
+      else if (text.compare(i, 2, "<?") == 0) i = skipPast("?>");
+      else if (text.compare(i, 2, "</") == 0) {
+        if (--depth == 0) return {start, open, i, tagEnd(i)};
+        i = tagEnd(i);
+      } else {
+        const std::size_t end = tagEnd(i);
+        if (text[i + 1] != '!' && text[end - 2] != '/') ++depth;
+        i = end;
+      }
+    }
+    return {start, open, text.size(), text.size()};
+  }
+
+  std::string between(std::size_t begin, std::size_t end) const { return text.substr(begin, end - begin); }
+
+  // An attribute as written: name="value" with the source's quotes and escapes.
+  std::string attribute(const rapidxml_ns::xml_attribute<char>* a) const {
+    const std::string name(a->name(), a->name_size());
+    const std::size_t value = offsetOf(a->value());
+    if (value == std::string::npos || value == 0) return {};
+    const char quote = text[value - 1];
+    const std::size_t end = text.find(quote, value);
+    return name + "=" + quote + between(value, end) + quote;
+  }
+};
+
+// Ids an XML fragment points at: url(#id), url('#id'), href="#id" (xlink:href too).
+std::vector<std::string> referencedIds(const std::string& text) {
+  std::vector<std::string> ids;
+  auto take = [&](std::size_t at, const char* stops) {
+    const std::size_t end = text.find_first_of(stops, at);
+    if (end != std::string::npos && end > at) ids.push_back(text.substr(at, end - at));
+  };
+  for (std::size_t at = text.find("url("); at != std::string::npos; at = text.find("url(", at + 4)) {
+    std::size_t i = at + 4;
+    while (i < text.size() && (text[i] == '\'' || text[i] == '"' || std::isspace(static_cast<unsigned char>(text[i])))) ++i;
+    if (i < text.size() && text[i] == '#') take(i + 1, ")'\" \t\n");
+  }
+  for (std::size_t at = text.find("href="); at != std::string::npos; at = text.find("href=", at + 5))
+    if (at + 6 < text.size() && (text[at + 5] == '"' || text[at + 5] == '\'') && text[at + 6] == '#')
+      take(at + 7, "\"'");
+  return ids;
+}
+
+void addNamespacesOf(const XmlNode* subtree, std::map<std::string, std::string>& namespaces) {
+  auto add = [&](const char* prefix, std::size_t prefixSize, const char* uri, std::size_t uriSize) {
+    const std::string p(prefix, prefixSize);
+    if (p.empty() || p == "xml" || p == "xmlns" || uriSize == 0) return;
+    namespaces.emplace(p, std::string(uri, uriSize));
+  };
+  forEachElement(const_cast<XmlNode*>(subtree), [&](XmlNode* node) {
+    add(node->prefix(), node->prefix_size(), node->namespace_uri(), node->namespace_uri_size());
+    for (auto* a = node->first_attribute(); a; a = a->next_attribute())
+      add(a->prefix(), a->prefix_size(), a->namespace_uri(), a->namespace_uri_size());
+  });
+}
+
+// Whether the stylesheet pass rewrote a style attribute in the subtree: the source's bytes
+// would then lose the colours CSS classes gave them.
+bool styledByStylesheet(const SourceText& source, const XmlNode* subtree) {
+  bool styled = false;
+  forEachElement(const_cast<XmlNode*>(subtree), [&](XmlNode* node) {
+    for (auto* a = node->first_attribute(); a; a = a->next_attribute())
+      if (std::string_view(a->name(), a->name_size()) == "style" && source.offsetOf(a->value()) == std::string::npos)
+        styled = true;
+  });
+  return styled;
+}
+
+// The fixed layers' children as written, wrapped in a <g> that places them as the input did
+// (the layer's transform and those of its ancestors, the ancestors' opacity) and one that
+// keeps the layer's own presentation attributes; the definitions they reference; the
+// namespaces their names use.
+RawMarkup fixedLayerMarkup(ReaderState& state, const SourceText& source, XmlNode* root) {
+  RawMarkup markup;
+  if (state.fixedLayers.empty()) return markup;
+  std::map<std::string, std::string> namespaces;
+  std::vector<std::array<std::size_t, 4>> copied;  // extents already in the output
+  std::string references;
+  for (const FixedLayerSource& layer : state.fixedLayers) {
+    if (styledByStylesheet(source, layer.node)) {
+      state.warn("fixed layer", "styled by a <style> sheet: the output re-draws it instead of copying it");
+      return {};
+    }
+  }
+  for (const FixedLayerSource& layer : state.fixedLayers) {
+    const auto extent = source.extent(layer.node);
+    if (extent[0] == extent[3]) continue;
+    copied.push_back(extent);
+    const Affine& m = layer.ctm;
+    std::string outer = "<g";
+    if (m.a != 1 || m.b != 0 || m.c != 0 || m.d != 1 || m.e != 0 || m.f != 0)
+      outer += " transform=\"matrix(" + formatNumber(m.a) + " " + formatNumber(m.b) + " " + formatNumber(m.c) + " " +
+               formatNumber(m.d) + " " + formatNumber(m.e) + " " + formatNumber(m.f) + ")\"";
+    if (layer.inheritedOpacity < 1.0) outer += " opacity=\"" + formatNumber(layer.inheritedOpacity) + "\"";
+    std::string inner = "<g";
+    for (auto* a = layer.node->first_attribute(); a; a = a->next_attribute()) {
+      const std::string_view name(a->name(), a->name_size());
+      if (a->prefix_size() > 0 || name == "id" || name == "transform" || name == "xmlns") continue;
+      const std::string written = source.attribute(a);
+      if (!written.empty()) inner += " " + written;
+    }
+    const std::string children = source.between(extent[1], extent[2]);
+    references += inner + children;
+    markup.content += outer + ">" + inner + ">" + children + "</g></g>";
+    addNamespacesOf(layer.node, namespaces);
+  }
+  if (markup.content.empty()) return markup;
+
+  // Definitions referenced from the copy, and those they reference in turn (a gradient's
+  // xlink:href), each copied once; those inside the copy already travel with it.
+  std::map<std::string, const XmlNode*> byId;
+  forEachElement(root, [&](XmlNode* node) {
+    const std::string id = attributeOf(node, "id");
+    if (!id.empty()) byId.emplace(id, node);
+  });
+  auto isCopied = [&](const std::array<std::size_t, 4>& e) {
+    return std::any_of(copied.begin(), copied.end(), [&](const auto& c) { return e[0] >= c[0] && e[3] <= c[3]; });
+  };
+  std::vector<std::string> pending = referencedIds(references);
+  std::set<std::string> seen;
+  while (!pending.empty()) {
+    const std::string id = pending.back();
+    pending.pop_back();
+    if (!seen.insert(id).second) continue;
+    auto it = byId.find(id);
+    if (it == byId.end()) continue;
+    const auto extent = source.extent(it->second);
+    if (extent[0] == extent[3] || isCopied(extent)) continue;
+    copied.push_back(extent);
+    const std::string text = source.between(extent[0], extent[3]);
+    markup.defs += (markup.defs.empty() ? "" : "\n") + text;
+    addNamespacesOf(it->second, namespaces);
+    for (std::string& more : referencedIds(text)) pending.push_back(std::move(more));
+  }
+  markup.namespaces.assign(namespaces.begin(), namespaces.end());
+  return markup;
+}
+
 }  // namespace
 
 SvgDocument readSvgString(const std::string& text, const std::string& name, const SvgReadOptions& options) {
@@ -1117,6 +1316,8 @@ SvgDocument readSvgString(const std::string& text, const std::string& name, cons
       throw InputError(name, state.currentElement + ": " + e.what());
     }
   }
+
+  document.fixedMarkup = fixedLayerMarkup(state, SourceText{text, buffer}, root);
 
   // The document's coordinate box: viewBox, else the size, else the drawing itself.
   Box drawingBounds;

@@ -9,6 +9,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <string>
 
 #include "pak/atomic_file.hpp"
@@ -134,12 +135,19 @@ class SvgBuilder {
     }
     for (const auto& [name, value] : group.attributes)
       if (isXmlName(name)) attribute(name, value);
-    if (group.shapes.empty() && group.children.empty()) {
+    if (group.markup) declareNamespaces(group.markup->namespaces, false);
+    const bool copied = group.markup && !group.markup->empty();
+    if (!copied && group.shapes.empty() && group.children.empty()) {
       out_ += "/>\n";
       return;
     }
     out_ += ">\n";
-    for (const Shape& shape : group.shapes) writeShape(shape, depth + 1);
+    if (copied) {
+      out_ += group.markup->content;  // as the input wrote it: never re-formatted
+      out_ += '\n';
+    } else {
+      for (const Shape& shape : group.shapes) writeShape(shape, depth + 1);
+    }
     for (const DrawingGroup& child : group.children) writeGroup(child, depth + 1);
     indent(depth);
     out_ += "</g>\n";
@@ -168,6 +176,24 @@ class SvgBuilder {
     out_ += "/>\n";
   }
 
+  // xmlns:prefix declarations for copied markup: on the root (`root`) for the prefixes the
+  // root does not bind otherwise, and on the copy's own element for those the root binds to
+  // another URI (XML scoping then gives the copy its own).
+  void declareNamespaces(const std::vector<std::pair<std::string, std::string>>& namespaces, bool root) {
+    for (const auto& [prefix, uri] : namespaces) {
+      if (!isXmlName(prefix) || prefix.find(':') != std::string::npos) continue;
+      auto bound = rootNamespaces_.find(prefix);
+      const bool conflicts = bound != rootNamespaces_.end() && bound->second != uri;
+      if (root && bound == rootNamespaces_.end()) {
+        rootNamespaces_[prefix] = uri;
+        attribute("xmlns:" + prefix, uri);
+      } else if (!root && conflicts) {
+        attribute("xmlns:" + prefix, uri);
+      }
+    }
+  }
+  void bindRootNamespace(const std::string& prefix, const std::string& uri) { rootNamespaces_[prefix] = uri; }
+
   void attribute(const std::string& name, const std::string& value) {
     out_ += ' ';
     out_ += name;
@@ -184,6 +210,7 @@ class SvgBuilder {
   double curveTolerance_;
   int clipCount_ = 0;
   std::string out_;
+  std::map<std::string, std::string> rootNamespaces_;  // prefix -> URI bound on the root
 };
 
 // The drawing's box, or the bounds of what it draws when the box was left empty.
@@ -218,6 +245,15 @@ std::string toSvgString(const Drawing& drawing, const SvgWriteOptions& options) 
   out += "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"no\"?>\n";
   out += "<svg xmlns=\"http://www.w3.org/2000/svg\"";
   out += " xmlns:inkscape=\"http://www.inkscape.org/namespaces/inkscape\"";
+  builder.bindRootNamespace("inkscape", "http://www.inkscape.org/namespaces/inkscape");
+  // Copied markup (a scene's fixed layer): its namespaces on the root, its definitions in <defs>.
+  std::vector<const RawMarkup*> markups;
+  auto collect = [&](const DrawingGroup& group, auto& self) -> void {
+    if (group.markup && !group.markup->empty()) markups.push_back(&*group.markup);
+    for (const DrawingGroup& child : group.children) self(child, self);
+  };
+  for (const DrawingGroup& group : drawing.groups) collect(group, collect);
+  for (const RawMarkup* markup : markups) builder.declareNamespaces(markup->namespaces, true);
   out += " version=\"1.1\"";
   builder.attribute("width", formatNumber(width, precision));
   builder.attribute("height", formatNumber(height, precision));
@@ -225,6 +261,14 @@ std::string toSvgString(const Drawing& drawing, const SvgWriteOptions& options) 
                                    " " + formatNumber(boxWidth, precision) + " " +
                                    formatNumber(boxHeight, precision));
   out += ">\n";
+  for (const RawMarkup* markup : markups) {
+    if (markup->defs.empty()) continue;
+    out += "  <defs";
+    builder.declareNamespaces(markup->namespaces, false);
+    out += ">\n";
+    out += markup->defs;
+    out += "\n  </defs>\n";
+  }
   for (const DrawingGroup& group : drawing.groups) builder.writeGroup(group, 1);
   out += "</svg>\n";
   return std::move(out);

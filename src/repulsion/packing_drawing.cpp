@@ -38,7 +38,12 @@ Drawing packingDrawing(const Scene& scene, const Packing& packing, const Packing
       s.strokeWidth = outlineWidth;
     }
   drawing.groups.push_back(std::move(container));
-  if (!scene.fixed.empty()) drawing.groups.push_back({"fixed", "", {}, scene.fixed, {}});
+  // SVG input: the writer copies the artist's fixed layer as written; .path input: re-drawn.
+  if (!scene.fixed.empty() || !scene.fixedMarkup.empty()) {
+    DrawingGroup fixed{"fixed", "", {}, scene.fixed, {}};
+    if (!scene.fixedMarkup.empty()) fixed.markup = scene.fixedMarkup;
+    drawing.groups.push_back(std::move(fixed));
+  }
 
   DrawingGroup elements{"elements", "", {}, {}, {}};
   for (const PlacedElement& e : packing.elements) {

@@ -260,6 +260,24 @@ void PackingSimulation::computeForces(std::size_t vertexBegin, std::size_t verte
   }
 }
 
+int PackingSimulation::projectInside() {
+  if (periodic()) return 0;
+  constexpr double kInsideMargin = 1e-3;  // canonical units
+  int moved = 0;
+  for (const MeshInstance& mesh : meshes_) {
+    if (mesh.frozen) continue;
+    const RegionIndex& region = parts_.empty() ? container_ : *parts_[mesh.container];
+    for (int v = mesh.vertexBegin; v < mesh.vertexBegin + mesh.vertexCount; ++v) {
+      const RegionIndex::Query q = region.query(position_[v], true);
+      if (q.inside) continue;
+      position_[v] = q.closest + normalized(q.closest - position_[v]) * kInsideMargin;
+      velocity_[v] = Vec2{};
+      ++moved;
+    }
+  }
+  return moved;
+}
+
 std::vector<PackingSimulation::Corner> PackingSimulation::reflexCorners(const Region& input) {
   Region region = input;
   normalizeOrientation(region);  // interior on the left of every ring

@@ -77,6 +77,10 @@ class PackingSimulation {
   void setDocks(std::vector<Dock> docks, double strength) { docks_ = std::move(docks); dockStrength_ = strength; }
 
   void step();
+  // Moves every vertex left outside its container onto the container's boundary, a hair
+  // inside (the boundary force is a penalty, so a pressed vertex rests slightly outside).
+  // Frozen meshes and periodic runs are left alone. Returns how many vertices moved.
+  int projectInside();
 
   // Skin area of all meshes over the container area.
   double fill() const { return fill_; }

@@ -10,6 +10,7 @@
 #include "packing_simulation.hpp"
 #include "pak/clipping.hpp"
 #include "pak/error.hpp"
+#include "pak/verify.hpp"
 #include "pak/repulsion.hpp"
 #include "pak/rng.hpp"
 #include "pak/tiling.hpp"
@@ -242,6 +243,16 @@ StopReason simulateUntilStopped(PackingSimulation& sim, const RepulsionOptions& 
   return reason;
 }
 
+// Whether no element's art overlaps another's or the fixed art, or leaves the container, by
+// more than verifyPacking's tolerance (as `pak pack` checks it).
+bool artIsClean(const Packing& packing, const Region& fixedArt) {
+  std::vector<Region> checked = artOutlines(packing);
+  if (!fixedArt.empty()) checked.push_back(fixedArt);
+  PackingCheckOptions options;
+  options.areaTolerance = 1e-6 * area(packing.container);
+  return verifyPacking(checked, packing.container, options).ok;
+}
+
 // The skin rings of all meshes as one region (canonical units).
 Region skinsRegion(const PackingSimulation& sim) {
   std::vector<Region> skins;
@@ -424,6 +435,8 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Library&
     return collectPacking(sim, types, frame, scene.container);
   });
   Packing packing = collectPacking(sim, types, frame, scene.container);
+  if (!isTiled(options.tile) && !artIsClean(packing, fixedArt) && sim.projectInside() > 0)
+    packing = collectPacking(sim, types, frame, scene.container);
   packing.stopReason = reason;
   packing.containers = partsInput;
   if (docking) {
@@ -495,6 +508,7 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Library&
         simulateUntilStopped(second, secondOptions, options.secondaryTargetFill, primaryIterations, callbacks, collect);
     secondPass.iterations = second.iteration();
     Packing result = collect();
+    if (!artIsClean(result, fixedArt) && second.projectInside() > 0) result = collect();
     packing.elements = std::move(result.elements);
     packing.iterations = result.iterations;
     packing.skinFill = result.skinFill;

@@ -154,3 +154,31 @@ TEST(PackingSimulation, ReflexCornerInsideAMeshPushesItOffAndBlocksGrowth) {
   Ring skin(sim.positions().begin(), sim.positions().begin() + 4);
   EXPECT_FALSE(pointInRing({50, 50}, skin));
 }
+
+TEST(PackingSimulation, ProjectInsideMovesOnlyOutsideVerticesOfMovingMeshes) {
+  Region container = box(100);
+  RegionIndex index(container, 5.0);
+  ThreadPool pool(1);
+  SimulationParameters p;
+  p.cellSize = 20.0;
+  PackingSimulation sim(index, 10000.0, p, pool);
+  sim.addMesh(squareMesh(), 0, {97, 50}, 0.0, 1.0);  // x 92..102: two corners 2 units outside
+  sim.addMesh(squareMesh(), 0, {50, 2}, 0.0, 1.0);   // y -3..7: outside too, but frozen
+  sim.meshes()[1].frozen = true;
+  sim.finalize(area(100));
+  const std::vector<Vec2> before = sim.positions();
+  EXPECT_EQ(sim.projectInside(), 2);
+  const MeshInstance& moving = sim.meshes()[0];
+  for (int v = 0; v < static_cast<int>(before.size()); ++v) {
+    const Vec2 now = sim.positions()[static_cast<std::size_t>(v)], was = before[static_cast<std::size_t>(v)];
+    if (v < moving.vertexBegin + moving.vertexCount && was.x > 100.0) {
+      EXPECT_LT(now.x, 100.0);  // on the wall, a hair inside
+      EXPECT_GT(now.x, 100.0 - 2e-3);
+      EXPECT_DOUBLE_EQ(now.y, was.y);
+      EXPECT_EQ(sim.velocities()[static_cast<std::size_t>(v)], Vec2{});
+    } else {
+      EXPECT_EQ(now, was) << v;
+    }
+  }
+  EXPECT_EQ(sim.projectInside(), 0);  // nothing left outside
+}
