@@ -226,6 +226,10 @@ int runFlow(FlowArguments& args) {
     report["outside-area"] = check.outsideArea;
     report["problems"] = check.problems;
     report["canonical-scale"] = packing.canonicalScale;
+    std::vector<int> perContainer(packing.containers.size(), 0);
+    for (const FlowElement& e : packing.elements)
+      if (e.container >= 0 && e.container < static_cast<int>(perContainer.size())) ++perContainer[e.container];
+    report["elements-per-container"] = perContainer;
     writeFileAtomically(args.report, report.dump(2) + "\n");
   }
   return 0;

@@ -37,6 +37,7 @@ struct Shape {
                                  // (one packed element in Pak's output), -1 if none
   std::string elements;          // `data-elements` of the shape or its nearest group that has
                                  // one: the library a container shape asks for ("" if none)
+  std::string gap;               // `data-gap`, likewise: a container's own FLOWPAK s_gap ("" if none)
 };
 
 // The region the shape's fill covers (fill rule applied; open subpaths closed, as SVG does).

@@ -55,6 +55,9 @@ struct ContainerPart {
   // Empty: filled from the run's library.
   std::vector<std::string> elementFiles;
   Library library;
+  // Its own FLOWPAK streamline spacing s_gap (the `data-gap` attribute, canonical units);
+  // 0: the run's.
+  double gap = 0.0;
 };
 
 }  // namespace pak

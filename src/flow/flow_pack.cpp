@@ -223,7 +223,9 @@ void FlowPacker::packContainer(int k) {
   t = Clock::now();
   report("streamlines", 0);
   StreamlineOptions lineOptions;
-  lineOptions.gap = options_.gap;
+  // A container's own `data-gap` sets its density (thesis Fig. 3.16: sparse and dense regions).
+  const double ownGap = scene_.containers.empty() ? 0.0 : scene_.containers[static_cast<std::size_t>(k)].gap;
+  lineOptions.gap = ownGap > 0.0 ? ownGap * unit_ : options_.gap;
   lineOptions.stopRatio = options_.stopRatio;
   lineOptions.minLength = options_.minLength;
   lineOptions.maxLength = options_.maxLength;

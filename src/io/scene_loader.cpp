@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <map>
 #include <string>
@@ -92,6 +94,16 @@ Scene sceneFromDocument(const SvgDocument& document) { return sceneFromDocument(
 
 namespace {
 
+// `data-gap="30"`: a positive number (canonical units).
+double gapOf(const std::string& attribute, const std::string& sceneFile) {
+  char* end = nullptr;
+  const double gap = std::strtod(attribute.c_str(), &end);
+  while (end && (*end == ' ' || *end == '\t')) ++end;
+  if (end == attribute.c_str() || (end && *end != '\0') || !std::isfinite(gap) || !(gap > 0.0))
+    throw InputError(sceneFile, "data-gap=\"" + attribute + "\" must be a positive number (canonical units)");
+  return gap;
+}
+
 // `data-elements="a.svg, b/"`: the files and folders, relative to the scene file.
 std::vector<std::string> elementFilesOf(const std::string& attribute, const std::string& sceneFile) {
   std::vector<std::string> files;
@@ -145,6 +157,7 @@ Scene sceneFromDocument(const SvgDocument& document, const SceneOptions& sceneOp
     throw InputError(document.file, "no usable container: the file has no shape in a layer named '" + containerLayer + "'");
   std::vector<Region> containerRegions, holeRegions;
   std::vector<std::string> regionElements;  // data-elements of each container region's shape
+  std::vector<std::string> regionGaps;      // and its data-gap
   std::vector<const Shape*> elementShapes;  // --container-layer elements: the placed elements' art
   std::vector<int> elementKeys;
   for (std::size_t i = 0; i < document.shapes.size(); ++i) {
@@ -175,6 +188,7 @@ Scene sceneFromDocument(const SvgDocument& document, const SceneOptions& sceneOp
       }
       containerRegions.push_back(std::move(region));
       regionElements.push_back(shape.elements);
+      regionGaps.push_back(shape.gap);
     }
   }
   if (elementContainers) {
@@ -212,6 +226,9 @@ Scene sceneFromDocument(const SvgDocument& document, const SceneOptions& sceneOp
       for (std::size_t r = 0; r < containerRegions.size() && part.elementFiles.empty(); ++r)
         if (!regionElements[r].empty() && area(intersect(part.region, containerRegions[r], clip)) > 0.0)
           part.elementFiles = elementFilesOf(regionElements[r], document.file);
+      for (std::size_t r = 0; r < containerRegions.size() && part.gap == 0.0; ++r)
+        if (!regionGaps[r].empty() && area(intersect(part.region, containerRegions[r], clip)) > 0.0)
+          part.gap = gapOf(regionGaps[r], document.file);
       scene.containers.push_back(std::move(part));
     }
   }

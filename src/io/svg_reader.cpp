@@ -343,10 +343,12 @@ class NodeContext {
         layerKnown_(parent.layerKnown_),
         topGroup_(parent.topGroup_),
         layerGroup_(parent.layerGroup_),
-        elements_(parent.elements_) {
+        elements_(parent.elements_),
+        gap_(parent.gap_) {
     tag_ = std::string(node->local_name(), node->local_name_size());
     id_ = attributeOf(node, "id");
     if (std::string own = attributeOf(node, "data-elements"); !own.empty()) elements_ = std::move(own);
+    if (std::string own = attributeOf(node, "data-gap"); !own.empty()) gap_ = std::move(own);
     if (tag_ == "defs") nonRendered_ = true;
     if (tag_ == "g") {
       if (parent.isRoot_) topGroup_ = state_->topLevelGroups++;
@@ -505,6 +507,7 @@ class NodeContext {
   bool isRoot_ = false;
   bool fixedLayer_ = false;   // the outermost group of a `fixed` layer
   std::string elements_;      // see Shape::elements
+  std::string gap_;           // see Shape::gap
 
  private:
   // The layer of a named group: the nearest ancestor named like a Pak layer wins, else the
@@ -638,6 +641,7 @@ class ShapeContext : public NodeContext {
     shape.topGroup = topGroup_;
     shape.layerGroup = layerGroup_;
     shape.elements = elements_;
+    shape.gap = gap_;
     pending.fill = style_.fill;
     pending.stroke = style_.stroke;
     pending.fillOpacity = style_.fillOpacity;

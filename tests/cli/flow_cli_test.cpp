@@ -59,6 +59,40 @@ TEST(CliFlow, MedallionKeepsItsFixedSunAndFixedSpinesAndIsDeterministic) {
   EXPECT_NE(svg.find("#f2b632"), std::string::npos);  // the sun's colour
 }
 
+TEST(CliFlow, EachContainerMayNameItsOwnDensityAndElements) {
+  ScratchFolder dir("cli-flow-regions");
+  // Two equal squares with guides; the left asks for streamlines twice as dense and for the
+  // leaf only.
+  std::string scene = dir.write(
+      "scene.svg",
+      R"(<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 420 200"><g id="container">)"
+      R"(<rect x="0" y="0" width="200" height="200" data-gap="30" data-elements="leaf.svg"/>)"
+      R"(<rect x="220" y="0" width="200" height="200" data-gap="60"/></g>)"
+      R"(<g id="guides"><path d="M 10 100 L 190 100" fill="none" stroke="red"/>)"
+      R"(<path d="M 230 100 L 410 100" fill="none" stroke="red"/></g></svg>)");
+  std::filesystem::copy_file(std::filesystem::path(PAK_SOURCE_DIR) / "examples/flow/elements/leaf.svg",
+                             dir.path() / "leaf.svg");
+  PakRun run = runPak("flow " + shellQuoted(scene) + " -e examples/flow/elements/teardrop.svg" + kQuick +
+                      " --min-length 40 -o " + shellQuoted(dir.file("o.svg")) + " --report " + shellQuoted(dir.file("r.json")));
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  auto report = nlohmann::json::parse(readWholeFile(dir.file("r.json")));
+  auto counts = report["elements-per-container"];
+  ASSERT_EQ(counts.size(), 2u);
+  EXPECT_GT(counts[0].get<int>(), counts[1].get<int>());
+  EXPECT_EQ(report["overlap-count"], 0);
+  std::string svg = readWholeFile(dir.file("o.svg"));
+  EXPECT_NE(svg.find("data-source=\"leaf.svg\""), std::string::npos);
+  EXPECT_NE(svg.find("data-source=\"teardrop.svg\""), std::string::npos);
+  // A bad density is one error line.
+  std::string bad = dir.write("bad.svg", R"(<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 100 100">)"
+                                         R"(<g id="container"><rect width="100" height="100" data-gap="dense"/></g>)"
+                                         R"(<g id="guides"><path d="M 0 50 L 100 50"/></g></svg>)");
+  PakRun failed = runPak("flow " + shellQuoted(bad) + " -e examples/flow/elements -o " + shellQuoted(dir.file("b.svg")));
+  EXPECT_EQ(failed.exitCode, 2);
+  ASSERT_EQ(failed.errLines().size(), 1u) << failed.err;
+  EXPECT_NE(failed.err.find("data-gap"), std::string::npos);
+}
+
 TEST(CliFlow, BadInputIsOneErrorLineAndExitTwo) {
   ScratchFolder dir("cli-flow-bad");
   std::string out = shellQuoted(dir.file("o.svg"));
