@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "command.hpp"
+#include "option_table.hpp"
 #include "pak/atomic_file.hpp"
 #include "pak/error.hpp"
 #include "pak/flow.hpp"
@@ -15,25 +16,12 @@
 #include "pak/png_renderer.hpp"
 #include "pak/scene_loader.hpp"
 #include "pak/svg_writer.hpp"
-#include "pak/text_file.hpp"
 #include "pak/verify.hpp"
 
 namespace pak::cli {
 namespace {
 
-// Every tunable option once: CLI flag, config-file key and report key share the name.
-struct NumberOption {
-  const char* name;
-  double FlowOptions::*field;
-  const char* help;
-};
-struct IntegerOption {
-  const char* name;
-  int FlowOptions::*field;
-  const char* help;
-};
-
-const NumberOption kNumberOptions[] = {
+const NumberOption<FlowOptions> kNumberOptions[] = {
     {"gap", &FlowOptions::gap, "s_gap, the distance between neighbouring streamlines, about an element's width (canonical units: l_canvas, the larger side of the containers' bounds, is 1000)"},
     {"min-length", &FlowOptions::minLength, "s_min: shorter streamlines get no element (canonical units)"},
     {"max-length", &FlowOptions::maxLength, "s_max: streamlines stop before this length (canonical units)"},
@@ -47,7 +35,7 @@ const NumberOption kNumberOptions[] = {
     {"shift-field-power", &FlowOptions::shiftFieldPower, "p of eq. 3.2"},
     {"fill-gaps-inset", &FlowOptions::fillGapsInset, "with --fill-gaps: the gap shapes' inset from the elements (canonical units; 0: spacing / 2)"},
 };
-const IntegerOption kIntegerOptions[] = {
+const IntegerOption<FlowOptions> kIntegerOptions[] = {
     {"iterations", &FlowOptions::iterations, "refinement iterations (Algorithm 2)"},
     {"max-rotation", &FlowOptions::maxRotationDegrees, "refinement tries rotations of ±1…N degrees"},
     {"lr-samples", &FlowOptions::lrSamples, "n_f, samples of the LR functions"},
@@ -55,6 +43,7 @@ const IntegerOption kIntegerOptions[] = {
     {"blob-resolution", &FlowOptions::blobResolution, "blob (Voronoi) grid cells along the longer side"},
     {"shift-neighbours", &FlowOptions::shiftNeighbours, "nearest nodes examined from each node when shifting a streamline"},
 };
+const OptionTable<FlowOptions> kOptions{kNumberOptions, kIntegerOptions};
 
 // --smooth: how far the written Bézier outlines may stray from the bent polygons (canonical units).
 constexpr double kSmoothTolerance = 0.4;
@@ -71,52 +60,9 @@ struct FlowArguments {
 };
 
 void applyConfig(FlowArguments& args) {
-  nlohmann::json json;
-  try {
-    json = nlohmann::json::parse(readTextFile(args.config));
-  } catch (const InputError&) {
-    throw;
-  } catch (const std::exception& e) {
-    throw InputError(args.config, std::string("not valid JSON: ") + e.what());
-  }
-  if (!json.is_object()) throw InputError(args.config, "expected a JSON object of option names to values");
-  for (auto& [key, value] : json.items()) {
-    if (args.command->count("--" + key) > 0) continue;  // command-line flags win over the file
-    bool known = false;
-    for (const auto& o : kNumberOptions)
-      if (key == o.name) {
-        if (!value.is_number()) throw InputError(args.config, "\"" + key + "\" must be a number");
-        args.options.*o.field = value.get<double>();
-        known = true;
-      }
-    for (const auto& o : kIntegerOptions)
-      if (key == o.name) {
-        if (!value.is_number_integer()) throw InputError(args.config, "\"" + key + "\" must be an integer");
-        args.options.*o.field = value.get<int>();
-        known = true;
-      }
-    if (key == "seed") {
-      if (!value.is_number_unsigned()) throw InputError(args.config, "\"seed\" must be a non-negative integer");
-      args.seed = value.get<std::uint64_t>();
-      known = true;
-    }
-    if (key == "fill-gaps") {
-      if (!value.is_boolean()) throw InputError(args.config, "\"fill-gaps\" must be true or false");
-      args.fillGaps = value.get<bool>();
-      known = true;
-    }
-    if (key == "smooth") {
-      if (!value.is_boolean()) throw InputError(args.config, "\"smooth\" must be true or false");
-      args.smooth = value.get<bool>();
-      known = true;
-    }
-    if (key == "mirror") {
-      if (!value.is_string()) throw InputError(args.config, "\"mirror\" must be a string such as \"x=120\"");
-      args.mirror = value.get<std::string>();
-      known = true;
-    }
-    if (!known) throw InputError(args.config, "unknown option \"" + key + "\"");
-  }
+  applyConfigFile(args.config, *args.command, kOptions, args.options,
+                  {seedKey("seed", args.seed), booleanKey("fill-gaps", args.fillGaps), booleanKey("smooth", args.smooth),
+                   stringKey("mirror", args.mirror)});
 }
 
 // "x=VALUE" (input units) for --mirror.
@@ -196,8 +142,7 @@ int runFlow(FlowArguments& args) {
 
   if (!args.report.empty()) {
     nlohmann::json parameters;
-    for (const auto& o : kNumberOptions) parameters[o.name] = args.options.*o.field;
-    for (const auto& o : kIntegerOptions) parameters[o.name] = args.options.*o.field;
+    kOptions.report(parameters, args.options);
     parameters["seed"] = args.seed;
     parameters["fill-gaps"] = args.fillGaps;
     parameters["mirror"] = args.mirror;
@@ -257,8 +202,7 @@ const CommandRegistrar registrar{{"flow", [](CLI::App& app) {
   cmd->add_option("--png", args->png, "also render a PNG preview to this file");
   cmd->add_option("--png-width", args->pngWidth, "PNG width in pixels")->capture_default_str();
   cmd->add_option("--seed", args->seed, "random seed; the same seed gives the same packing")->capture_default_str();
-  for (const auto& o : kNumberOptions) cmd->add_option(std::string("--") + o.name, args->options.*o.field, o.help)->capture_default_str();
-  for (const auto& o : kIntegerOptions) cmd->add_option(std::string("--") + o.name, args->options.*o.field, o.help)->capture_default_str();
+  kOptions.addTo(*cmd, args->options);
   cmd->add_flag("--fill-gaps", args->fillGaps, "add shapes made from the negative space between the elements (thesis Fig. 3.15)");
   cmd->add_flag("--smooth", args->smooth,
                 "write outlines as cubic Béziers fitted within 0.4 canonical units instead of polygons (thesis 3.4's "

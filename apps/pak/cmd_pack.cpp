@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "command.hpp"
+#include "option_table.hpp"
 #include "pak/atomic_file.hpp"
 #include "pak/closest_point.hpp"
 #include "pak/error.hpp"
@@ -21,26 +22,13 @@
 #include "pak/scene_loader.hpp"
 #include "pak/shape_matching.hpp"
 #include "pak/svg_writer.hpp"
-#include "pak/text_file.hpp"
 #include "pak/tiling.hpp"
 #include "pak/verify.hpp"
 
 namespace pak::cli {
 namespace {
 
-// Every tunable option once: CLI flag, config-file key and report key share the name.
-struct NumberOption {
-  const char* name;
-  double RepulsionOptions::*field;
-  const char* help;
-};
-struct IntegerOption {
-  const char* name;
-  int RepulsionOptions::*field;
-  const char* help;
-};
-
-const NumberOption kNumberOptions[] = {
+const NumberOption<RepulsionOptions> kNumberOptions[] = {
     {"gap", &RepulsionOptions::gap, "d_gap, the spacing between elements (canonical units: the container's bounding square is 1000 wide)"},
     {"mesh-spacing", &RepulsionOptions::meshSpacing, "distance between mesh samples, canonical units (0: max(gap, element size / 10))"},
     {"element-area", &RepulsionOptions::elementArea, "nominal area of one element as a fraction of the container; sets the count when --count is 0"},
@@ -67,13 +55,14 @@ const NumberOption kNumberOptions[] = {
     {"secondary-separation", &RepulsionOptions::secondarySeparation, "d_sep: secondary seeds keep at least this far apart (canonical units; 0: L, the nominal secondary size)"},
     {"secondary-target-fill", &RepulsionOptions::secondaryTargetFill, "the secondary pass stops when skins (and fixed elements) cover this fraction of the container"},
 };
-const IntegerOption kIntegerOptions[] = {
+const IntegerOption<RepulsionOptions> kIntegerOptions[] = {
     {"count", &RepulsionOptions::count, "number of elements to seed (0: container area / element area)"},
     {"max-iterations", &RepulsionOptions::maxIterations, "hard cap on simulation iterations"},
     {"stall-window", &RepulsionOptions::stallWindow, "w of eq. 4.7, in iterations"},
     {"threads", &RepulsionOptions::threads, "worker threads (0: all cores); the result does not depend on it"},
     {"secondary-resolution", &RepulsionOptions::secondaryResolution, "distance transform cells across the container for seeding secondaries"},
 };
+const OptionTable<RepulsionOptions> kOptions{kNumberOptions, kIntegerOptions};
 
 struct PackArguments {
   std::string container;
@@ -95,71 +84,14 @@ struct PackArguments {
 };
 
 void applyConfig(PackArguments& args) {
-  nlohmann::json json;
-  try {
-    json = nlohmann::json::parse(readTextFile(args.config));
-  } catch (const InputError&) {
-    throw;
-  } catch (const std::exception& e) {
-    throw InputError(args.config, std::string("not valid JSON: ") + e.what());
-  }
-  if (!json.is_object()) throw InputError(args.config, "expected a JSON object of option names to values");
-  for (auto& [key, value] : json.items()) {
-    bool isOption = key == "seed" || key == "stall-on-measured-area" || key == "shape-matching" ||
-                    key == "orientation" || key == "orientation-field" || key == "container-layer" ||
-                    key == "tile" || key == "preset" || key == "rigid";
-    for (const auto& o : kNumberOptions) isOption |= key == o.name;
-    for (const auto& o : kIntegerOptions) isOption |= key == o.name;
-    if (!isOption) throw InputError(args.config, "unknown option \"" + key + "\"");
-    // Flags given on the command line win over the file.
-    if (args.command->count("--" + key) > 0) continue;
-    bool known = false;
-    for (const auto& o : kNumberOptions)
-      if (key == o.name) {
-        if (!value.is_number()) throw InputError(args.config, "\"" + key + "\" must be a number");
-        args.options.*o.field = value.get<double>();
-        known = true;
-      }
-    for (const auto& o : kIntegerOptions)
-      if (key == o.name) {
-        if (!value.is_number_integer()) throw InputError(args.config, "\"" + key + "\" must be an integer");
-        args.options.*o.field = value.get<int>();
-        known = true;
-      }
-    if (key == "stall-on-measured-area") {
-      if (!value.is_boolean()) throw InputError(args.config, "\"stall-on-measured-area\" must be true or false");
-      args.options.stallOnMeasuredArea = value.get<bool>();
-      known = true;
-    }
-    if (key == "shape-matching") {
-      if (!value.is_boolean()) throw InputError(args.config, "\"shape-matching\" must be true or false");
-      args.options.shapeMatching = value.get<bool>();
-      known = true;
-    }
-    if (key == "orientation" || key == "orientation-field" || key == "container-layer" || key == "tile" ||
-        key == "preset") {
-      if (!value.is_string()) throw InputError(args.config, "\"" + key + "\" must be a string");
-      std::string& target = key == "orientation"         ? args.orientation
-                            : key == "orientation-field" ? args.orientationField
-                            : key == "container-layer"   ? args.containerLayer
-                            : key == "tile"              ? args.tile
-                                                         : args.preset;
-      target = value.get<std::string>();
-      known = true;
-    }
-    if (key == "rigid") {
-      if (!value.is_boolean()) throw InputError(args.config, "\"rigid\" must be true or false");
-      args.rigid = value.get<bool>();
-      known = true;
-    }
-    if (key == "seed") {
-      if (!value.is_number_unsigned()) throw InputError(args.config, "\"seed\" must be a non-negative integer");
-      args.seed = value.get<std::uint64_t>();
-      known = true;
-    }
-    if (!known) throw InputError(args.config, "unknown option \"" + key + "\"");
-    args.configKeys.insert(key);
-  }
+  args.configKeys = applyConfigFile(args.config, *args.command, kOptions, args.options,
+                                    {seedKey("seed", args.seed),
+                                     booleanKey("stall-on-measured-area", args.options.stallOnMeasuredArea),
+                                     booleanKey("shape-matching", args.options.shapeMatching),
+                                     booleanKey("rigid", args.rigid), stringKey("orientation", args.orientation),
+                                     stringKey("orientation-field", args.orientationField),
+                                     stringKey("container-layer", args.containerLayer), stringKey("tile", args.tile),
+                                     stringKey("preset", args.preset)});
 }
 
 // "W,H" (input units) for --tile.
@@ -190,13 +122,9 @@ int runPack(PackArguments& args) {
   if (!args.preset.empty()) {
     RepulsionOptions preset = args.options;
     applyRepulsionPreset(args.preset, preset);
-    auto given = [&](const char* name) {
+    kOptions.copyUnless(args.options, preset, [&](const char* name) {
       return args.command->count(std::string("--") + name) > 0 || args.configKeys.count(name) > 0;
-    };
-    for (const auto& o : kNumberOptions)
-      if (!given(o.name)) args.options.*o.field = preset.*o.field;
-    for (const auto& o : kIntegerOptions)
-      if (!given(o.name)) args.options.*o.field = preset.*o.field;
+    });
   }
   args.options.seed = args.seed;
   // A field given alone asks for the field.
@@ -298,8 +226,7 @@ int runPack(PackArguments& args) {
   if (!args.report.empty()) {
     nlohmann::json report;
     nlohmann::json parameters;
-    for (const auto& o : kNumberOptions) parameters[o.name] = args.options.*o.field;
-    for (const auto& o : kIntegerOptions) parameters[o.name] = args.options.*o.field;
+    kOptions.report(parameters, args.options);
     parameters["seed"] = args.seed;
     parameters["stall-on-measured-area"] = args.options.stallOnMeasuredArea;
     parameters["orientation"] = toString(args.options.orientation);
@@ -404,12 +331,7 @@ const CommandRegistrar registrar{{"pack", [](CLI::App& app) {
   cmd->add_option("--png", args->png, "also render a PNG preview to this file");
   cmd->add_option("--png-width", args->pngWidth, "PNG width in pixels")->capture_default_str();
   cmd->add_option("--seed", args->seed, "random seed; the same seed gives the same packing")->capture_default_str();
-  for (const auto& o : kNumberOptions) {
-    cmd->add_option(std::string("--") + o.name, args->options.*o.field, o.help)->capture_default_str();
-  }
-  for (const auto& o : kIntegerOptions) {
-    cmd->add_option(std::string("--") + o.name, args->options.*o.field, o.help)->capture_default_str();
-  }
+  kOptions.addTo(*cmd, args->options);
   cmd->add_option("--config", args->config, "JSON file of option names to values (command-line flags win)");
   cmd->add_option("--report", args->report, "write a JSON report: parameters, iterations, times, fill ratios, overlaps");
   cmd->add_option("--snapshots", args->snapshots, "write intermediate SVGs into this folder");

@@ -29,6 +29,16 @@ struct Drawing {
   std::vector<DrawingGroup> groups;
 };
 
+// Unfilled lines in one colour: what debug layers and outlines are drawn with.
+inline Shape strokedLines(std::vector<Subpath> subpaths, Color colour, double width) {
+  Shape s;
+  s.subpaths = std::move(subpaths);
+  s.fill.reset();
+  s.stroke = colour;
+  s.strokeWidth = width;
+  return s;
+}
+
 // Everything the document shows, grouped by layer, for `pak render` and debugging.
 struct SvgDocument;
 Drawing drawingFromDocument(const SvgDocument& document);

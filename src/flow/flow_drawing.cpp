@@ -7,15 +7,6 @@
 namespace pak {
 namespace {
 
-Shape strokeShape(std::vector<Subpath> subpaths, Color colour, double width) {
-  Shape s;
-  s.subpaths = std::move(subpaths);
-  s.fill.reset();
-  s.stroke = colour;
-  s.strokeWidth = width;
-  return s;
-}
-
 // Short line segments along the field on a coarse grid inside the containers, each with a
 // small barb at its head so the direction reads.
 DrawingGroup fieldLayer(const FlowPacking& packing, double hairline) {
@@ -37,7 +28,7 @@ DrawingGroup fieldLayer(const FlowPacking& packing, double hairline) {
         arrows.push_back({{b - rotated(v, 0.5) * (0.15 * spacing), b, b - rotated(v, -0.5) * (0.15 * spacing)}, false});
       }
   }
-  group.shapes.push_back(strokeShape(std::move(arrows), Color{200, 40, 40, 0.8}, hairline));
+  group.shapes.push_back(strokedLines(std::move(arrows), Color{200, 40, 40, 0.8}, hairline));
   return group;
 }
 
@@ -67,7 +58,7 @@ Drawing flowDrawing(const Scene& scene, const FlowPacking& packing, const FlowDr
   DrawingGroup streamlines{"streamlines", "", {}, {}, {}};
   std::vector<Subpath> traced;
   for (const Polyline& s : packing.streamlines) traced.push_back({s, false});
-  streamlines.shapes.push_back(strokeShape(std::move(traced), Color{30, 90, 220, 0.9}, 1.5 * hairline));
+  streamlines.shapes.push_back(strokedLines(std::move(traced), Color{30, 90, 220, 0.9}, 1.5 * hairline));
   drawing.groups.push_back(std::move(streamlines));
   DrawingGroup spines{"spines", "", {}, {}, {}};
   DrawingGroup blobs{"blobs", "", {}, {}, {}};
@@ -79,8 +70,8 @@ Drawing flowDrawing(const Scene& scene, const FlowPacking& packing, const FlowDr
       for (const Ring& h : p.holes) outlines.push_back({h, true});
     }
   }
-  spines.shapes.push_back(strokeShape(std::move(used), Color{0, 150, 60, 0.9}, 1.5 * hairline));
-  blobs.shapes.push_back(strokeShape(std::move(outlines), Color{120, 60, 200, 0.8}, hairline));
+  spines.shapes.push_back(strokedLines(std::move(used), Color{0, 150, 60, 0.9}, 1.5 * hairline));
+  blobs.shapes.push_back(strokedLines(std::move(outlines), Color{120, 60, 200, 0.8}, hairline));
   drawing.groups.push_back(std::move(spines));
   drawing.groups.push_back(std::move(blobs));
   return drawing;

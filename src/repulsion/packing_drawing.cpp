@@ -6,19 +6,6 @@
 
 namespace pak {
 
-namespace {
-
-Shape outlineShape(std::vector<Subpath> subpaths, Color colour, double width) {
-  Shape s;
-  s.subpaths = std::move(subpaths);
-  s.fill.reset();
-  s.stroke = colour;
-  s.strokeWidth = width;
-  return s;
-}
-
-}  // namespace
-
 Drawing packingDrawing(const Scene& scene, const Packing& packing, const PackingDrawingOptions& options) {
   Drawing drawing;
   drawing.viewBox = scene.viewBox.empty() ? bounds(scene.container) : scene.viewBox;
@@ -59,11 +46,11 @@ Drawing packingDrawing(const Scene& scene, const Packing& packing, const Packing
     DrawingGroup skins{"skins", "", {}, {}, {}};
     DrawingGroup meshes{"meshes", "", {}, {}, {}};
     for (const PlacedElement& e : packing.elements) {
-      skins.shapes.push_back(outlineShape({Subpath{e.skin, true}}, Color{0, 120, 255, 0.9}, hairline));
+      skins.shapes.push_back(strokedLines({Subpath{e.skin, true}}, Color{0, 120, 255, 0.9}, hairline));
       std::vector<Subpath> triangles;
       for (const auto& t : e.meshTriangles)
         triangles.push_back({{e.meshVertices[t[0]], e.meshVertices[t[1]], e.meshVertices[t[2]]}, true});
-      meshes.shapes.push_back(outlineShape(std::move(triangles), Color{60, 60, 60, 0.6}, hairline * 0.5));
+      meshes.shapes.push_back(strokedLines(std::move(triangles), Color{60, 60, 60, 0.6}, hairline * 0.5));
     }
     drawing.groups.push_back(std::move(skins));
     drawing.groups.push_back(std::move(meshes));
