@@ -53,6 +53,7 @@ struct FlowArguments {
   std::vector<std::string> elements;
   std::string output, png, config, report, snapshots, mirror;
   int pngWidth = 1200;
+  int every = 1;
   bool quiet = false, debugLayers = false, fillGaps = false, smooth = false;
   std::uint64_t seed = 1;
   FlowOptions options;
@@ -102,7 +103,9 @@ int runFlow(FlowArguments& args) {
     std::error_code ec;
     std::filesystem::create_directories(args.snapshots, ec);
     if (ec) throw InputError(args.snapshots, "cannot create snapshot folder: " + ec.message());
+    if (args.every < 1) throw InputError("", "--every must be at least 1");
     callbacks.onIteration = [&](const FlowPacking& p, int iteration) {
+      if (iteration % args.every != 0 && iteration != args.options.iterations) return;
       char name[64];
       std::snprintf(name, sizeof name, "iteration-%03d.svg", iteration);
       writeSvgFile(flowDrawing(scene, p), (std::filesystem::path(args.snapshots) / name).string());
@@ -212,7 +215,9 @@ const CommandRegistrar registrar{{"flow", [](CLI::App& app) {
                   "(thesis Fig. 3.13)");
   cmd->add_option("--config", args->config, "JSON file of option names to values (command-line flags win)");
   cmd->add_option("--report", args->report, "write a JSON report: parameters, counts, times per phase, fill ratio, overlaps");
-  cmd->add_option("--snapshots", args->snapshots, "write the packing after placement and after every refinement iteration into this folder");
+  cmd->add_option("--snapshots", args->snapshots,
+                  "write the packing after placement (iteration-000.svg) and after refinement iterations into this folder");
+  cmd->add_option("--every", args->every, "with --snapshots: every N-th refinement iteration (and the last)")->capture_default_str();
   cmd->add_flag("--debug-layers", args->debugLayers, "add layers showing the vector field, streamlines, element spines and blobs");
   cmd->add_flag("--quiet,-q", args->quiet, "no progress output");
   return [args] { return runFlow(*args); };

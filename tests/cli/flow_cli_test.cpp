@@ -106,6 +106,8 @@ TEST(CliFlow, BadInputIsOneErrorLineAndExitTwo) {
         "flow examples/flow/koi.svg -e examples/flow/elements -o " + out + " --gap -4",
         "flow examples/flow/koi.svg -e examples/flow/elements -o " + out + " --min-length 500 --max-length 100",
         "flow examples/flow/koi.svg -e examples/flow/elements -o " + out + " --config " + shellQuoted(badConfig),
+        "flow examples/flow/koi.svg -e examples/flow/elements -o " + out + " --snapshots " +
+            shellQuoted(dir.file("s")) + " --every 0",
         "flow examples/flow/koi.svg -e no-such-folder -o " + out}) {
     PakRun run = runPak(args);
     EXPECT_EQ(run.exitCode, 2) << args << "\n" << run.err;
