@@ -37,12 +37,20 @@ struct Scene {
   std::vector<Warning> warnings;
 };
 
+// A named point of an element (a `<circle id="handle-NAME">` in its SVG, not part of the
+// art), in the element file's coordinates: what AnimationPak's shape animation moves.
+struct ElementHandle {
+  std::string name;
+  Vec2 position;
+};
+
 struct ElementArt {
   std::string source;   // file the element came from
   std::string name;     // file stem, or group id for a multi-element SVG
   std::vector<Shape> shapes;
   Region outline;       // union of everything the art paints (holes kept)
   std::optional<std::array<Vec2, 2>> spine;  // FLOWPAK spine if the file gives one
+  std::vector<ElementHandle> handles;        // AnimationPak handles, if the file gives any
   std::vector<Warning> warnings;  // the reader's and the element's: what was ignored and why
 };
 
