@@ -1,14 +1,18 @@
 #pragma once
 // The forces of the RepulsionPak simulation (thesis eq. 4.2–4.6), as pure functions of
-// positions so they can be tested against hand-computed values and reused in (x, y, t).
+// positions so they can be tested against hand-computed values. Repulsion, edge, overlap and
+// boundary forces are templates over the vector type: RepulsionPak uses them in the plane
+// (Vec2), AnimationPak in (x, y, t) spacetime (Vec3, thesis 5.5).
 #include "pak/vec2.hpp"
+#include "pak/vec3.hpp"
 
 namespace pak::forces {
 
 // Eq. 4.2, one neighbour: pushes x away from x_i, the closest point on the neighbour's skin.
 // `soft` (ς) bounds the magnitude at k/ς when the points meet.
-inline Vec2 repulsion(Vec2 x, Vec2 closestOnNeighbour, double k, double soft) {
-  Vec2 u = x - closestOnNeighbour;
+template <class V>
+inline V repulsion(V x, V closestOnNeighbour, double k, double soft) {
+  V u = x - closestOnNeighbour;
   double d2 = lengthSquared(u);
   if (d2 == 0.0) return {};
   return u * (k / (std::sqrt(d2) * (soft + d2)));
@@ -16,8 +20,9 @@ inline Vec2 repulsion(Vec2 x, Vec2 closestOnNeighbour, double k, double soft) {
 
 // Eq. 4.3: quadratic spring on vertex a (apply the negation to b). Pulls a toward b when
 // stretched, pushes it away when compressed; magnitude k (|u| - rest)².
-inline Vec2 edge(Vec2 a, Vec2 b, double restLength, double k) {
-  Vec2 u = b - a;
+template <class V>
+inline V edge(V a, V b, double restLength, double k) {
+  V u = b - a;
   double len = length(u);
   if (len == 0.0) return {};
   double stretch = len - restLength;
@@ -26,10 +31,12 @@ inline Vec2 edge(Vec2 a, Vec2 b, double restLength, double k) {
 }
 
 // Eq. 4.4, one incident triangle: pulls an intruding vertex toward the triangle's centroid.
-inline Vec2 overlap(Vec2 x, Vec2 triangleCentroid, double k) { return (triangleCentroid - x) * k; }
+template <class V>
+inline V overlap(V x, V triangleCentroid, double k) { return (triangleCentroid - x) * k; }
 
 // Eq. 4.5: pulls a vertex outside the container toward the closest boundary point.
-inline Vec2 boundary(Vec2 x, Vec2 closestOnBoundary, double k) { return (closestOnBoundary - x) * k; }
+template <class V>
+inline V boundary(V x, V closestOnBoundary, double k) { return (closestOnBoundary - x) * k; }
 
 // Eq. 4.6: turns x about the element's current centre c back toward its rest direction
 // `restDirection` (x_rest - c_rest rotated by the preferred orientation). Returns k·u⊥ with

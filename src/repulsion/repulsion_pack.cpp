@@ -8,6 +8,7 @@
 #include "containers.hpp"
 #include "corner_docking.hpp"
 #include "packing_simulation.hpp"
+#include "pak/canonical_frame.hpp"
 #include "pak/clipping.hpp"
 #include "pak/error.hpp"
 #include "pak/verify.hpp"
@@ -29,16 +30,6 @@ const char* toString(StopReason reason) {
 }
 
 namespace {
-
-constexpr double kCanonicalSide = 1000.0;
-
-// The container's bounding square maps to [0, 1000]²: canonical = (input - origin) * scale.
-struct CanonicalFrame {
-  Vec2 origin;
-  double scale = 1.0;
-  Vec2 toCanonical(Vec2 p) const { return (p - origin) * scale; }
-  Vec2 toInput(Vec2 p) const { return p / scale + origin; }
-};
 
 // A library element scaled into canonical units, centred on its outline's centroid.
 struct PreparedElement {
@@ -294,9 +285,7 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Library&
   double containerAreaInput = area(scene.container);
   if (box.empty() || !(containerAreaInput > 0.0)) throw InputError(scene.source, "container has no area");
 
-  CanonicalFrame frame;
-  frame.origin = box.min;
-  frame.scale = kCanonicalSide / std::max(box.width(), box.height());
+  const CanonicalFrame frame = CanonicalFrame::of(box);
   Region container = transformed(scene.container, frame.scale, -box.min * frame.scale);
   normalizeOrientation(container);
   // Fixed elements: obstacles. Their art, offset by gap/2 as a skin is, is cut out of the

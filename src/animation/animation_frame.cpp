@@ -1,0 +1,58 @@
+// A frame of an animated packing (thesis 5.6): slices interpolated at t, art replayed.
+#include <algorithm>
+#include <cmath>
+
+#include "pak/animation.hpp"
+
+namespace pak {
+
+Packing animationFrame(const AnimatedPacking& animation, double t) {
+  Packing packing;
+  packing.container = animation.container;
+  packing.containers = {animation.container};
+  packing.canonicalScale = animation.canonicalScale;
+  packing.iterations = animation.iterations;
+  std::vector<Vec2> vertices, artPoints;
+  double skinArea = 0.0;
+  for (std::size_t e = 0; e < animation.elements.size(); ++e) {
+    const AnimatedElement& element = animation.elements[e];
+    const std::vector<double>& times = element.sliceTimes;
+    const int last = static_cast<int>(times.size()) - 1;
+    int s = static_cast<int>(std::upper_bound(times.begin(), times.end(), t) - times.begin()) - 1;
+    s = std::clamp(s, 0, last - 1);
+    const double span = times[s + 1] - times[s];
+    const double w = span > 0.0 ? std::clamp((t - times[s]) / span, 0.0, 1.0) : 0.0;
+    const std::vector<Vec2>& a = element.slices[s];
+    const std::vector<Vec2>& b = element.slices[s + 1];
+    vertices.resize(a.size());
+    for (std::size_t v = 0; v < a.size(); ++v) vertices[v] = a[v] + (b[v] - a[v]) * w;
+    replayArt(element.mesh, vertices.data(), artPoints);
+
+    PlacedElement placed;
+    placed.libraryIndex = static_cast<int>(e);
+    placed.source = element.source;
+    placed.growth = element.sliceGrowth[s] + (element.sliceGrowth[s + 1] - element.sliceGrowth[s]) * w;
+    placed.meshVertices = vertices;
+    placed.meshTriangles = element.mesh.mesh.triangles;
+    placed.skin.assign(vertices.begin(), vertices.begin() + element.mesh.boundaryCount);
+    const double areaHere = std::abs(signedArea(placed.skin)) * animation.canonicalScale * animation.canonicalScale;
+    skinArea += areaHere;
+    // Strokes scale with the element's linear size in this frame.
+    const double strokeScale =
+        element.restSkinArea > 0.0 ? std::sqrt(areaHere / element.restSkinArea) / animation.canonicalScale : 1.0;
+    placed.art = element.art;
+    std::size_t k = 0;
+    for (Shape& shape : placed.art) {
+      shape.id.clear();  // copies of one element must not repeat its SVG ids
+      shape.strokeWidth *= strokeScale;
+      for (Subpath& sub : shape.subpaths)
+        for (Vec2& p : sub.points) p = artPoints[k++];
+    }
+    packing.elements.push_back(std::move(placed));
+  }
+  const double containerArea = area(animation.container) * animation.canonicalScale * animation.canonicalScale;
+  packing.skinFill = containerArea > 0.0 ? skinArea / containerArea : 0.0;
+  return packing;
+}
+
+}  // namespace pak

@@ -1,0 +1,427 @@
+// packAnimation: canonical frame, element types, initial configuration (thesis 5.4),
+// simulation (5.5) and collection of the slices.
+#include "pak/animation.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <numbers>
+
+#include "pak/blue_noise.hpp"
+#include "pak/canonical_frame.hpp"
+#include "pak/element_animator.hpp"
+#include "pak/error.hpp"
+#include "pak/rng.hpp"
+
+namespace pak {
+
+const char* toString(AnimationStop reason) {
+  switch (reason) {
+    case AnimationStop::AllTouching: return "all-slices-touching";
+    case AnimationStop::GrowthCap: return "growth-cap";
+    case AnimationStop::IterationCap: return "iteration-cap";
+  }
+  return "?";
+}
+
+namespace {
+
+// One script element, prepared: its mesh in canonical units centred on the art's centroid,
+// and the animated rest shape of every slice.
+struct ElementType {
+  const AnimatedElementSpec* spec = nullptr;
+  std::string source;
+  int meshIndex = 0;                        // into the shared meshes (one per SVG file)
+  std::vector<std::vector<Vec2>> shapes;    // per slice, centred (canonical, growth 1)
+  double radius = 0.0;                      // largest |vertex| over all slices
+};
+
+struct SharedMesh {
+  ElementMesh mesh;
+  std::vector<Shape> art;
+};
+
+// One element in the packing and its reference slices (growth 1).
+struct Instance {
+  int type = 0;
+  int copy = 0;
+  std::vector<Vec2> reference;           // slices × vertices
+  std::vector<Vec2> centre;              // per slice
+  std::vector<SpacetimeElementSetup::Target> targets;
+};
+
+void checkOptions(const AnimationOptions& o, int slices) {
+  auto positive = [](double v, const char* name) {
+    if (!(v > 0.0) || !std::isfinite(v)) throw InputError("", std::string(name) + " must be a positive number");
+  };
+  if (slices < 2 || slices > 1000) throw InputError("", "slices must be between 2 and 1000");
+  if (!(o.elementArea >= 0.0 && o.elementArea <= 1.0)) throw InputError("", "element area must be in [0, 1]");
+  positive(o.gap, "gap");
+  if (!(o.meshSpacing >= 0.0) || !std::isfinite(o.meshSpacing)) throw InputError("", "mesh spacing must not be negative");
+  if (!(o.initialScale > 0.0 && o.initialScale <= 1.0)) throw InputError("", "initial scale must be in (0, 1]");
+  positive(o.closeness, "closeness");
+  if (o.maxIterations < 0) throw InputError("", "max iterations must not be negative");
+  const SpacetimeParameters& p = o.simulation;
+  positive(p.timeStep, "time step");
+  positive(p.velocityCap, "velocity cap");
+  positive(p.cellSize, "cell size");
+  positive(p.timeLength, "time length");
+  positive(p.maxGrowth, "max growth");
+  if (!(p.damping >= 0.0 && p.damping < 1.0)) throw InputError("", "damping must be in [0, 1)");
+  for (double k : {p.repulsionStrength, p.overlapStrength, p.boundaryStrength, p.edgeStrength, p.negativeSpaceStrength,
+                   p.timeStrength, p.targetStrength, p.temporalStrength, p.soft, p.growthRate, p.outsideTolerance,
+                   o.torsionStrength})
+    if (!(k >= 0.0) || !std::isfinite(k)) throw InputError("", "force strengths and rates must be non-negative numbers");
+}
+
+double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
+
+// Linear interpolation of the guided targets at t (5.4): position, and scale and rotation
+// where targets give them.
+struct GuidePose { Vec2 position; double scale = 1.0; double rotation = 0.0; };
+GuidePose guidePose(const std::vector<GuideTarget>& targets, const CanonicalFrame& frame, double t) {
+  std::size_t k = 1;
+  while (k + 1 < targets.size() && targets[k].t < t) ++k;
+  const GuideTarget& a = targets[k - 1];
+  const GuideTarget& b = targets[k];
+  const double w = b.t > a.t ? std::clamp((t - a.t) / (b.t - a.t), 0.0, 1.0) : 0.0;
+  auto channel = [&](auto get, double fallback) {
+    // The nearest targets that give the value, on each side.
+    double before = fallback, after = fallback, tb = 0.0, ta = 1.0;
+    bool haveBefore = false, haveAfter = false;
+    for (const GuideTarget& g : targets) {
+      std::optional<double> v = get(g);
+      if (!v) continue;
+      if (g.t <= t) before = *v, tb = g.t, haveBefore = true;
+      if (g.t >= t && !haveAfter) after = *v, ta = g.t, haveAfter = true;
+    }
+    if (!haveBefore) return haveAfter ? after : fallback;
+    if (!haveAfter || ta <= tb) return before;
+    return before + (after - before) * (t - tb) / (ta - tb);
+  };
+  GuidePose pose;
+  pose.position = frame.toCanonical(a.position + (b.position - a.position) * w);
+  pose.scale = channel([](const GuideTarget& g) { return g.scale; }, 1.0);
+  pose.rotation = channel([](const GuideTarget& g) { return g.rotation; }, 0.0);
+  return pose;
+}
+
+Vec2 rotate(Vec2 p, double angle) { return rotated(p, angle); }
+
+// Vertex i of one slice ↔ the vertex of another slice in the same place, both centred: the
+// skin rings by the cyclic shift that fits best, interior vertices by nearest neighbour.
+std::vector<int> sliceCorrespondence(const ElementMesh& mesh, const Vec2* from, Vec2 fromCentre, const Vec2* to,
+                                     Vec2 toCentre) {
+  const int n = static_cast<int>(mesh.mesh.vertices.size()), nb = mesh.boundaryCount;
+  std::vector<int> result(n);
+  int bestShift = 0;
+  double best = std::numeric_limits<double>::infinity();
+  for (int shift = 0; shift < nb; ++shift) {
+    double cost = 0.0;
+    for (int i = 0; i < nb && cost < best; ++i)
+      cost += lengthSquared((from[i] - fromCentre) - (to[(i + shift) % nb] - toCentre));
+    if (cost < best) best = cost, bestShift = shift;
+  }
+  for (int i = 0; i < nb; ++i) result[i] = (i + bestShift) % nb;
+  for (int i = nb; i < n; ++i) {
+    int nearest = nb;
+    double d = std::numeric_limits<double>::infinity();
+    for (int j = nb; j < n; ++j)
+      if (double dj = lengthSquared((from[i] - fromCentre) - (to[j] - toCentre)); dj < d) d = dj, nearest = j;
+    result[i] = nearest;
+  }
+  return result;
+}
+
+}  // namespace
+
+AnimatedPacking packAnimation(const Scene& scene, const Library& library, const AnimationScript& script,
+                              const AnimationOptions& options, const AnimationCallbacks& callbacks,
+                              const AnimationState* resumeFrom) {
+  const auto started = std::chrono::steady_clock::now();
+  const int slices = options.slices > 0 ? options.slices : script.slices;
+  checkOptions(options, slices);
+  if (script.elements.empty()) throw InputError("", "the animation has no elements");
+  if (library.size() != script.elements.size()) throw InputError("", "one element art per animation element is needed");
+  const Box box = bounds(scene.container);
+  const double inputArea = area(scene.container);
+  if (box.empty() || !(inputArea > 0.0)) throw InputError(scene.source, "container has no area");
+
+  const CanonicalFrame frame = CanonicalFrame::of(box);
+  const Region container = transformed(scene.container, frame.scale, -box.min * frame.scale);
+  const double containerArea = area(container);
+  const RegionIndex containerIndex(container, 10.0);
+
+  int total = 0;
+  for (const AnimatedElementSpec& spec : script.elements) total += spec.count;
+  const double nominalArea = (options.elementArea > 0.0 ? options.elementArea : 1.0 / total) * containerArea;
+  const double nominalSize = std::sqrt(nominalArea);
+  const double gap = options.gap * nominalSize;
+  const double spacing = options.meshSpacing > 0.0 ? options.meshSpacing : nominalSize / 5.0;
+
+  // One common scale keeps the library's relative sizes; the mean skin area is the nominal one.
+  double meanArt = 0.0;
+  for (const ElementArt& e : library) {
+    const double a = area(e.outline);
+    if (!(a > 0.0)) throw InputError(e.source, "element paints no area");
+    meanArt += a / library.size();
+  }
+  double scale = std::sqrt(0.75 * nominalArea / meanArt);
+  {
+    double meanSkin = 0.0;
+    for (const ElementArt& e : library)
+      meanSkin += area(Region{elementSkin(transformed(e.outline, scale, -centroid(e.outline) * scale), gap, 0.5)}) /
+                  library.size();
+    if (meanSkin > 0.0) scale *= std::sqrt(nominalArea / meanSkin);
+  }
+
+  // Meshes, one per SVG file (so loops may join copies of different script entries).
+  std::vector<SharedMesh> meshes;
+  std::map<std::string, int> meshOfSource;
+  std::vector<ElementType> types(script.elements.size());
+  const double dtSlice = 1.0 / (slices - 1);
+  for (std::size_t i = 0; i < script.elements.size(); ++i) {
+    const ElementArt& art = library[i];
+    ElementType& type = types[i];
+    type.spec = &script.elements[i];
+    type.source = art.source;
+    const Vec2 centre = centroid(art.outline);
+    auto [it, fresh] = meshOfSource.try_emplace(art.source, static_cast<int>(meshes.size()));
+    if (fresh) {
+      SharedMesh shared;
+      shared.art = art.shapes;
+      for (Shape& shape : shared.art)
+        for (Subpath& sub : shape.subpaths)
+          for (Vec2& p : sub.points) p = (p - centre) * scale;
+      for (Shape& shape : shared.art) shape.strokeWidth *= scale;
+      ElementMeshOptions meshOptions;
+      meshOptions.gap = gap;
+      meshOptions.spacing = spacing;
+      meshOptions.seed = options.seed * 7919 + meshes.size();
+      try {
+        shared.mesh = buildElementMesh(shared.art, transformed(art.outline, scale, -centre * scale), meshOptions);
+      } catch (const InputError& error) {
+        throw InputError(art.source, error.what());
+      }
+      meshes.push_back(std::move(shared));
+    }
+    type.meshIndex = it->second;
+    try {
+      ElementAnimator animator(meshes[type.meshIndex].mesh.mesh, art.handles, type.spec->animation, centre, scale, script.loop);
+      type.shapes.resize(slices);
+      for (int s = 0; s < slices; ++s) {
+        animator.shapeAt(s * dtSlice, type.shapes[s]);
+        for (Vec2 p : type.shapes[s]) type.radius = std::max(type.radius, length(p));
+      }
+    } catch (const InputError& error) {
+      throw InputError(art.source, std::string("element '") + type.spec->id + "': " + error.what());
+    }
+  }
+
+  // --- Initial configuration (5.4): guided elements along their targets, then blue-noise
+  // seeds for the others, away from the guided tubes; everything shrunk to fit.
+  Rng rng(options.seed);
+  std::vector<Instance> instances;
+  std::vector<int> guidedInstance(types.size(), -1);
+  double largestRadius = 0.0;
+  for (const ElementType& type : types) largestRadius = std::max(largestRadius, type.radius);
+  for (std::size_t i = 0; i < types.size(); ++i) {
+    const ElementType& type = types[i];
+    if (type.spec->targets.empty()) continue;
+    const ElementMesh& mesh = meshes[type.meshIndex].mesh;
+    int anchor = 0;  // the vertex nearest the centroid (the mesh is centred on it)
+    for (std::size_t v = 1; v < mesh.mesh.vertices.size(); ++v)
+      if (length(mesh.mesh.vertices[v]) < length(mesh.mesh.vertices[anchor])) anchor = static_cast<int>(v);
+    Instance instance;
+    instance.type = static_cast<int>(i);
+    for (int s = 0; s < slices; ++s) {
+      const GuidePose pose = guidePose(type.spec->targets, frame, s * dtSlice);
+      const std::vector<Vec2>& shape = type.shapes[s];
+      Vec2 sum;
+      for (Vec2 p : shape) {
+        const Vec2 q = pose.position + rotate(p - shape[anchor], -radians(pose.rotation)) * pose.scale;
+        instance.reference.push_back(q);
+        sum += q;
+      }
+      instance.centre.push_back(sum / static_cast<double>(shape.size()));
+    }
+    for (const GuideTarget& target : type.spec->targets) {
+      const int s = static_cast<int>(std::lround(target.t * (slices - 1)));
+      instance.targets.push_back({s, anchor, frame.toCanonical(target.position)});
+    }
+    guidedInstance[i] = static_cast<int>(instances.size());
+    instances.push_back(std::move(instance));
+  }
+  const int guidedCount = static_cast<int>(instances.size());
+
+  std::vector<int> unguided;  // type of each unguided copy, in a random order
+  for (std::size_t i = 0; i < types.size(); ++i)
+    if (types[i].spec->targets.empty())
+      for (int c = 0; c < types[i].spec->count; ++c) unguided.push_back(static_cast<int>(i));
+  for (std::size_t k = unguided.size(); k > 1; --k) std::swap(unguided[k - 1], unguided[rng.below(k)]);
+
+  // Seeds r apart hold elements of radius ≤ 0.45 r without overlap; shrink r until enough
+  // seeds clear the guided tubes.
+  double initialGrowth = options.initialScale;
+  std::vector<Vec2> seeds;
+  if (!unguided.empty()) {
+    double r = std::sqrt(containerArea / (0.866 * unguided.size()));
+    for (int attempt = 0; attempt < 40; ++attempt, r *= 0.9) {
+      BlueNoiseOptions noise;
+      noise.radius = r;
+      noise.boundaryMargin = 0.5 * r;
+      noise.seed = options.seed * 31 + attempt;
+      const double g = std::min(options.initialScale, 0.45 * r / largestRadius);
+      seeds.clear();
+      for (Vec2 p : blueNoiseSample(container, noise)) {
+        bool clear = true;
+        for (int gi = 0; gi < guidedCount && clear; ++gi) {
+          const Instance& guided = instances[gi];
+          const double reach = (types[guided.type].radius + largestRadius) * g * 1.2;
+          for (int s = 0; s < slices && clear; ++s) clear = distance(p, guided.centre[s]) > reach;
+        }
+        if (clear) seeds.push_back(p);
+      }
+      if (seeds.size() >= unguided.size()) {
+        initialGrowth = g;
+        break;
+      }
+    }
+    if (seeds.size() < unguided.size())
+      throw InputError(scene.source, "the container has no room to seed " + std::to_string(unguided.size()) + " elements");
+    for (std::size_t k = seeds.size(); k > 1; --k) std::swap(seeds[k - 1], seeds[rng.below(k)]);
+  }
+  std::vector<int> copies(types.size(), 0);
+  for (std::size_t k = 0; k < unguided.size(); ++k) {
+    const ElementType& type = types[unguided[k]];
+    Instance instance;
+    instance.type = unguided[k];
+    instance.copy = copies[unguided[k]]++;
+    const double angle = type.spec->orientation ? -radians(*type.spec->orientation) : rng.uniform(0.0, 2.0 * std::numbers::pi);
+    for (int s = 0; s < slices; ++s) {
+      Vec2 sum;
+      for (Vec2 p : type.shapes[s]) {
+        const Vec2 q = seeds[k] + rotate(p, angle);
+        instance.reference.push_back(q);
+        sum += q;
+      }
+      instance.centre.push_back(sum / static_cast<double>(type.shapes[s].size()));
+    }
+    instances.push_back(std::move(instance));
+  }
+
+  // --- Simulation (5.5).
+  ThreadPool pool(options.threads);
+  SpacetimeSimulation sim(containerIndex, containerArea, slices, options.simulation, pool);
+  for (const Instance& instance : instances) {
+    const ElementType& type = types[instance.type];
+    SpacetimeElementSetup setup;
+    setup.mesh = &meshes[type.meshIndex].mesh;
+    setup.reference = instance.reference;
+    setup.referenceCentre = instance.centre;
+    setup.initialGrowth = initialGrowth;
+    setup.torsionStrength = type.spec->orientation ? options.torsionStrength : 0.0;
+    setup.targets = instance.targets;
+    sim.addElement(setup);
+  }
+  if (script.loop) {
+    for (std::size_t e = 0; e < instances.size(); ++e) {
+      const ElementType& type = types[instances[e].type];
+      int to = static_cast<int>(e);
+      if (!type.spec->loopTo.empty())
+        for (std::size_t i = 0; i < types.size(); ++i)
+          if (types[i].spec->id == type.spec->loopTo) to = guidedInstance[i] >= 0 ? guidedInstance[i] : to;
+      const ElementType& toType = types[instances[to].type];
+      if (toType.meshIndex != type.meshIndex)
+        throw InputError("", "element '" + type.spec->id + "' loops to '" + toType.spec->id +
+                                 "', drawn from another SVG; a loop joins copies of one drawing");
+      const ElementMesh& mesh = meshes[type.meshIndex].mesh;
+      const std::size_t n = mesh.mesh.vertices.size();
+      sim.addLoop(static_cast<int>(e), to,
+                  sliceCorrespondence(mesh, instances[e].reference.data() + (slices - 1) * n, instances[e].centre.back(),
+                                      instances[to].reference.data(), instances[to].centre.front()));
+    }
+  }
+  sim.finalize(Box{{0.0, 0.0}, {kCanonicalSide, kCanonicalSide}});
+  if (resumeFrom) {
+    if (resumeFrom->positions.size() != sim.vertexCount() || resumeFrom->growth.size() != sim.growth().size() ||
+        resumeFrom->velocities.size() != sim.vertexCount())
+      throw InputError("", "the checkpoint was made for other inputs or options (its sizes do not match)");
+    sim.restoreState(resumeFrom->iteration, resumeFrom->positions, resumeFrom->velocities, resumeFrom->growth);
+  }
+  const auto setupDone = std::chrono::steady_clock::now();
+
+  AnimatedPacking result;
+  auto progress = [&] {
+    AnimationProgress p;
+    p.iteration = sim.iteration();
+    p.fill = sim.fill();
+    p.growingSlices = sim.growingSlices();
+    p.overlappingSlices = sim.overlappingSlices();
+    p.slices = static_cast<int>(sim.growth().size());
+    p.largestSliceGap = sim.largestSliceGap();
+    p.minGrowth = sim.minGrowth();
+    return p;
+  };
+  auto state = [&] {
+    return AnimationState{sim.iteration(), sim.positions(), sim.velocities(), sim.growth()};
+  };
+  result.stopReason = AnimationStop::IterationCap;
+  while (sim.iteration() < options.maxIterations) {
+    sim.step();
+    const int it = sim.iteration();
+    if (callbacks.onProgress && callbacks.progressEvery > 0 && it % callbacks.progressEvery == 0) callbacks.onProgress(progress());
+    if (callbacks.onCheckpoint && callbacks.checkpointEvery > 0 && it % callbacks.checkpointEvery == 0) callbacks.onCheckpoint(state());
+    if (sim.largestSliceGap() < options.closeness) {
+      result.stopReason = AnimationStop::AllTouching;
+      break;
+    }
+    if (sim.minGrowth() >= options.simulation.maxGrowth) {
+      result.stopReason = AnimationStop::GrowthCap;
+      break;
+    }
+  }
+  if (callbacks.onProgress) callbacks.onProgress(progress());
+
+  // --- Results in input coordinates.
+  for (std::size_t e = 0; e < instances.size(); ++e) {
+    const ElementType& type = types[instances[e].type];
+    const SharedMesh& shared = meshes[type.meshIndex];
+    AnimatedElement out;
+    out.id = type.spec->id;
+    out.source = type.source;
+    out.copy = instances[e].copy;
+    out.guided = !type.spec->targets.empty();
+    out.mesh = shared.mesh;
+    out.art = shared.art;
+    out.restSkinArea = shared.mesh.skinArea;
+    const int n = sim.verticesPerSlice(static_cast<int>(e));
+    const int begin = sim.vertexBegin(static_cast<int>(e));
+    for (int s = 0; s < slices; ++s) {
+      std::vector<Vec2> vertices(n);
+      for (int v = 0; v < n; ++v) vertices[v] = frame.toInput(spatial(sim.positions()[begin + s * n + v]));
+      out.slices.push_back(std::move(vertices));
+      out.sliceTimes.push_back(sim.positions()[begin + s * n].t / options.simulation.timeLength);
+      out.sliceGrowth.push_back(sim.growth()[e * slices + s]);
+    }
+    result.elements.push_back(std::move(out));
+  }
+  result.container = scene.container;
+  result.canonicalScale = frame.scale;
+  result.iterations = sim.iteration();
+  result.fill = sim.fill();
+  result.overlappingSlices = sim.overlappingSlices();
+  result.vertices = sim.vertexCount();
+  result.springs = sim.springCount();
+  result.envelopeTriangles = sim.envelopeTriangleCount();
+  result.slices = slices;
+  result.threads = pool.threadCount();
+  result.seed = options.seed;
+  const auto finished = std::chrono::steady_clock::now();
+  result.setupSeconds = std::chrono::duration<double>(setupDone - started).count();
+  result.seconds = std::chrono::duration<double>(finished - started).count();
+  return result;
+}
+
+}  // namespace pak

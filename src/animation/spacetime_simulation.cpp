@@ -1,0 +1,507 @@
+#include "pak/spacetime_simulation.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <limits>
+
+#include "pak/forces.hpp"
+
+namespace pak {
+
+namespace {
+constexpr double kNoTarget = std::numeric_limits<double>::quiet_NaN();
+constexpr double kFar = std::numeric_limits<double>::infinity();
+}  // namespace
+
+SpacetimeSimulation::SpacetimeSimulation(const RegionIndex& container, double containerArea, int slices,
+                                         const SpacetimeParameters& parameters, ThreadPool& pool)
+    : container_(container), containerArea_(containerArea), slices_(slices), parameters_(parameters), pool_(pool) {
+  assert(slices >= 2);
+}
+
+int SpacetimeSimulation::addElement(const SpacetimeElementSetup& setup) {
+  const ElementMesh& mesh = *setup.mesh;
+  const int n = static_cast<int>(mesh.mesh.vertices.size());
+  assert(static_cast<int>(setup.reference.size()) == n * slices_);
+  assert(static_cast<int>(setup.referenceCentre.size()) == slices_);
+  const int element = static_cast<int>(elements_.size());
+  const int vertexBegin = static_cast<int>(position_.size());
+  const int sliceBegin = static_cast<int>(growth_.size());
+  elements_.push_back({&mesh, vertexBegin, n, sliceBegin, setup.torsionStrength});
+
+  const double dt = parameters_.timeLength / (slices_ - 1);
+  for (int s = 0; s < slices_; ++s) {
+    const int slice = sliceBegin + s;
+    const double t = s * dt;
+    sliceElement_.push_back(element);
+    sliceVertexBegin_.push_back(vertexBegin + s * n);
+    growth_.push_back(setup.initialGrowth);
+    sliceTime_.push_back(t);
+    restTime_.push_back(t);
+    referenceCentre_.push_back(setup.referenceCentre[s]);
+    for (int v = 0; v < n; ++v) {
+      const Vec2 r = setup.reference[s * n + v];
+      const Vec2 c = setup.referenceCentre[s];
+      const Vec2 p = c + (r - c) * setup.initialGrowth;
+      reference_.push_back(r);
+      position_.push_back({p.x, p.y, t});
+      sliceOf_.push_back(slice);
+      isBoundary_.push_back(v < mesh.boundaryCount ? 1 : 0);
+    }
+  }
+
+  // In-slice springs, then time springs between consecutive slice boundaries (5.3.1): for
+  // the boundary edge AB of slice s and CD of slice s + 1, the edges AC, AD and BC.
+  for (int s = 0; s < slices_; ++s) {
+    const int base = vertexBegin + s * n;
+    for (const Spring& spring : mesh.springs) {
+      double k = spring.kind == SpringKind::NegativeSpace ? parameters_.negativeSpaceStrength : parameters_.edgeStrength;
+      pending_.push_back({base + spring.a, base + spring.b, k});
+    }
+  }
+  const int nb = mesh.boundaryCount;
+  for (int s = 0; s + 1 < slices_; ++s) {
+    const int lower = vertexBegin + s * n, upper = lower + n;
+    for (int k = 0; k < nb; ++k) {
+      const int a = lower + k, b = lower + (k + 1) % nb, c = upper + k, d = upper + (k + 1) % nb;
+      pending_.push_back({a, c, parameters_.timeStrength});
+      pending_.push_back({a, d, parameters_.timeStrength});
+      pending_.push_back({b, c, parameters_.timeStrength});
+      envelope_.push_back({a, b, c});  // outward normal (b − a) × (c − a) for a ring that
+      envelope_.push_back({a, d, c});  // turns counter-clockwise seen from +t
+      envelopeElement_.push_back(element);
+      envelopeElement_.push_back(element);
+    }
+  }
+  for (const SpacetimeElementSetup::Target& target : setup.targets)
+    pendingTargets_.push_back({target.slice, vertexBegin + target.slice * n + target.vertex, target.position});
+  return element;
+}
+
+void SpacetimeSimulation::addLoop(int from, int to, std::vector<int> correspondence) {
+  assert(static_cast<int>(correspondence.size()) == elements_[from].verticesPerSlice);
+  loops_.push_back({from, to, std::move(correspondence)});
+}
+
+void SpacetimeSimulation::finalize(const Box& area) {
+  const std::size_t nv = position_.size();
+  velocity_.assign(nv, {});
+  force_.assign(nv, {});
+  referencePoint_.assign(nv, {});
+  insideOther_.assign(nv, 0);
+  outside_.assign(nv, 0);
+  nearestGap_.assign(nv, kFar);
+  targetPull_.assign(nv, {kNoTarget, kNoTarget});
+  for (const auto& target : pendingTargets_) targetPull_[target.vertex] = target.position;
+
+  // Springs as CSR at both ends, in a fixed order.
+  springStart_.assign(nv + 1, 0);
+  for (const PendingSpring& s : pending_) ++springStart_[s.a + 1], ++springStart_[s.b + 1];
+  for (std::size_t v = 0; v < nv; ++v) springStart_[v + 1] += springStart_[v];
+  springOther_.assign(springStart_[nv], 0);
+  springStiffness_.assign(springStart_[nv], 0.0);
+  std::vector<int> fill(springStart_.begin(), springStart_.end() - 1);
+  for (const PendingSpring& s : pending_) {
+    springOther_[fill[s.a]] = s.b, springStiffness_[fill[s.a]++] = s.stiffness;
+    springOther_[fill[s.b]] = s.a, springStiffness_[fill[s.b]++] = s.stiffness;
+  }
+  pending_.clear();
+  pending_.shrink_to_fit();
+
+  // In-slice triangles incident to each vertex.
+  triangleStart_.assign(nv + 1, 0);
+  for (const ElementRecord& e : elements_)
+    for (int s = 0; s < slices_; ++s)
+      for (const auto& tri : e.mesh->mesh.triangles)
+        for (int corner : tri) ++triangleStart_[e.vertexBegin + s * e.verticesPerSlice + corner + 1];
+  for (std::size_t v = 0; v < nv; ++v) triangleStart_[v + 1] += triangleStart_[v];
+  incidentTriangle_.assign(triangleStart_[nv], {});
+  fill.assign(triangleStart_.begin(), triangleStart_.end() - 1);
+  for (const ElementRecord& e : elements_)
+    for (int s = 0; s < slices_; ++s) {
+      const int base = e.vertexBegin + s * e.verticesPerSlice;
+      for (const auto& tri : e.mesh->mesh.triangles) {
+        std::array<int, 3> global{base + tri[0], base + tri[1], base + tri[2]};
+        for (int corner : global) incidentTriangle_[fill[corner]++] = global;
+      }
+    }
+
+  const std::size_t ns = growth_.size();
+  sliceCentre_.assign(ns, {});
+  sliceOverlapping_.assign(ns, 0);
+  sliceOutside_.assign(ns, 0);
+  sliceGap_.assign(ns, kFar);
+  sliceArea_.assign(ns, 0.0);
+
+  // Collision grid over the container's box (grown by a cell) × [0, timeLength].
+  const double cell = parameters_.cellSize;
+  gridOrigin_ = {area.min.x - cell, area.min.y - cell, -cell};
+  nx_ = std::max(1, static_cast<int>(std::ceil((area.width() + 2 * cell) / cell)));
+  ny_ = std::max(1, static_cast<int>(std::ceil((area.height() + 2 * cell) / cell)));
+  nt_ = std::max(1, static_cast<int>(std::ceil((parameters_.timeLength + 2 * cell) / cell)));
+  const std::size_t cells = static_cast<std::size_t>(nx_) * ny_ * nt_;
+  const std::size_t nt = envelope_.size();
+  envelopeCentroid_.assign(nt, {});
+  envelopeRadius_.assign(nt, 0.0);
+  envelopeCell_.assign(nt, 0);
+  cellCount_.assign(cells + 1, 0);
+  cellTriangles_.assign(nt, 0);
+  cellGroupStart_.assign(cells + 1, 0);
+  groups_.assign(nt, {});
+  computeReferencePoints(0, nv);
+  computeSliceCentres();
+  buildGrid();
+}
+
+std::array<int, 3> SpacetimeSimulation::cellOf(Vec3 p) const {
+  const double inv = 1.0 / parameters_.cellSize;
+  auto clampTo = [](double v, int n) { return std::clamp(static_cast<int>(std::floor(v)), 0, n - 1); };
+  return {clampTo((p.x - gridOrigin_.x) * inv, nx_), clampTo((p.y - gridOrigin_.y) * inv, ny_),
+          clampTo((p.t - gridOrigin_.t) * inv, nt_)};
+}
+
+// Where each vertex would be if its slice had its reference shape at its current growth:
+// the rest lengths of all springs are distances between these points (5.5.3).
+void SpacetimeSimulation::computeReferencePoints(std::size_t begin, std::size_t end) {
+  for (std::size_t v = begin; v < end; ++v) {
+    const int s = sliceOf_[v];
+    const Vec2 c = referenceCentre_[s];
+    const Vec2 p = c + (reference_[v] - c) * growth_[s];
+    referencePoint_[v] = {p.x, p.y, restTime_[s]};
+  }
+}
+
+void SpacetimeSimulation::buildGrid() {
+  const std::size_t nt = envelope_.size();
+  pool_.parallelFor(nt, 1024, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      const auto& tri = envelope_[i];
+      const Vec3 a = position_[tri[0]], b = position_[tri[1]], c = position_[tri[2]];
+      const Vec3 centroid = (a + b + c) / 3.0;
+      envelopeCentroid_[i] = centroid;
+      envelopeRadius_[i] = std::sqrt(std::max({lengthSquared(a - centroid), lengthSquared(b - centroid), lengthSquared(c - centroid)}));
+      const auto [x, y, t] = cellOf(centroid);
+      envelopeCell_[i] = (t * ny_ + y) * nx_ + x;
+    }
+  });
+  // Counting sort by cell; stable, so each cell lists its triangles element by element.
+  std::fill(cellCount_.begin(), cellCount_.end(), 0);
+  for (std::size_t i = 0; i < nt; ++i) ++cellCount_[envelopeCell_[i] + 1];
+  const std::size_t cells = cellCount_.size() - 1;
+  for (std::size_t c = 0; c < cells; ++c) cellCount_[c + 1] += cellCount_[c];
+  // cellCount_ now holds starts; fill with a moving cursor kept in cellGroupStart_ temporarily.
+  std::copy(cellCount_.begin(), cellCount_.end(), cellGroupStart_.begin());
+  for (std::size_t i = 0; i < nt; ++i) cellTriangles_[cellGroupStart_[envelopeCell_[i]]++] = static_cast<int>(i);
+  // Runs of one element inside a cell become groups with a bounding sphere.
+  std::size_t groupCount = 0;
+  for (std::size_t c = 0; c < cells; ++c) {
+    cellGroupStart_[c] = static_cast<int>(groupCount);
+    for (int k = cellCount_[c]; k < cellCount_[c + 1];) {
+      const int element = envelopeElement_[cellTriangles_[k]];
+      int end = k;
+      Vec3 centre;
+      while (end < cellCount_[c + 1] && envelopeElement_[cellTriangles_[end]] == element)
+        centre += envelopeCentroid_[cellTriangles_[end++]];
+      centre = centre / static_cast<double>(end - k);
+      double radius = 0.0;
+      for (int j = k; j < end; ++j) {
+        const int tri = cellTriangles_[j];
+        radius = std::max(radius, distance(envelopeCentroid_[tri], centre) + envelopeRadius_[tri]);
+      }
+      groups_[groupCount++] = {element, k, end, centre, radius};
+      k = end;
+    }
+  }
+  cellGroupStart_[cells] = static_cast<int>(groupCount);
+}
+
+// The nearest point of every other element near vertex v (5.5.1): exact closest points on
+// envelope triangles in the 3 × 3 × 3 block of cells around it, and for elements seen only in
+// the outer shell of the 5 × 5 × 5 block, the centre of their triangles there.
+int SpacetimeSimulation::gatherHits(int v, Hit* hits) const {
+  const Vec3 x = position_[v];
+  const int self = sliceElement_[sliceOf_[v]];
+  const double cell = parameters_.cellSize;
+  const double reach = cell, shellReach = 2.5 * cell;
+  const auto [cx, cy, ct] = cellOf(x);
+  int count = 0;
+  auto record = [&](int element, double d2, Vec3 point, bool exact) {
+    for (int k = 0; k < count; ++k) {
+      if (hits[k].element != element) continue;
+      if ((exact && !hits[k].exact) || (exact == hits[k].exact && d2 < hits[k].d2)) hits[k] = {element, d2, point, exact};
+      return;
+    }
+    if (count < kMaxHits) {
+      hits[count++] = {element, d2, point, exact};
+      return;
+    }
+    int worst = 0;  // full: replace the farthest approximate (then farthest) hit
+    for (int k = 1; k < count; ++k)
+      if ((hits[worst].exact && !hits[k].exact) || (hits[worst].exact == hits[k].exact && hits[k].d2 > hits[worst].d2)) worst = k;
+    if ((exact && !hits[worst].exact) || (exact == hits[worst].exact && d2 < hits[worst].d2)) hits[worst] = {element, d2, point, exact};
+  };
+  for (int dt = -2; dt <= 2; ++dt) {
+    const int t = ct + dt;
+    if (t < 0 || t >= nt_) continue;
+    for (int dy = -2; dy <= 2; ++dy) {
+      const int y = cy + dy;
+      if (y < 0 || y >= ny_) continue;
+      for (int dx = -2; dx <= 2; ++dx) {
+        const int xx = cx + dx;
+        if (xx < 0 || xx >= nx_) continue;
+        const bool inner = std::abs(dx) <= 1 && std::abs(dy) <= 1 && std::abs(dt) <= 1;
+        const int c = (t * ny_ + y) * nx_ + xx;
+        for (int g = cellGroupStart_[c]; g < cellGroupStart_[c + 1]; ++g) {
+          const EnvelopeGroup& group = groups_[g];
+          if (group.element == self) continue;
+          const double toCentre = distance(x, group.centre);
+          if (!inner) {
+            if (toCentre < shellReach) record(group.element, toCentre * toCentre, group.centre, false);
+            continue;
+          }
+          if (toCentre - group.radius > reach) continue;
+          for (int k = group.begin; k < group.end; ++k) {
+            const int tri = cellTriangles_[k];
+            if (distance(x, envelopeCentroid_[tri]) - envelopeRadius_[tri] > reach) continue;
+            const auto& corners = envelope_[tri];
+            const Vec3 q = closestPointOnTriangle(x, position_[corners[0]], position_[corners[1]], position_[corners[2]]);
+            const double d2 = lengthSquared(q - x);
+            if (d2 <= reach * reach) record(group.element, d2, q, true);
+          }
+        }
+      }
+    }
+  }
+  return count;
+}
+
+// Whether x lies inside `element`'s cross-section at time x.t: the skin rings of the two
+// slices around x.t, interpolated as the renderer does (5.6).
+bool SpacetimeSimulation::insideElementAt(int element, Vec3 x) const {
+  const ElementRecord& e = elements_[element];
+  const double* times = &sliceTime_[e.sliceBegin];
+  if (x.t < times[0] || x.t > times[slices_ - 1]) return false;
+  int s = static_cast<int>(std::upper_bound(times, times + slices_, x.t) - times) - 1;
+  s = std::clamp(s, 0, slices_ - 2);
+  const double span = times[s + 1] - times[s];
+  const double w = span > 0.0 ? std::clamp((x.t - times[s]) / span, 0.0, 1.0) : 0.0;
+  const int lower = e.vertexBegin + s * e.verticesPerSlice, upper = lower + e.verticesPerSlice;
+  const int nb = e.mesh->boundaryCount;
+  auto ringPoint = [&](int k) {
+    const Vec3 a = position_[lower + k], b = position_[upper + k];
+    return Vec2{a.x + (b.x - a.x) * w, a.y + (b.y - a.y) * w};
+  };
+  bool inside = false;
+  Vec2 prev = ringPoint(nb - 1);
+  for (int k = 0; k < nb; ++k) {
+    const Vec2 here = ringPoint(k);
+    if ((here.y > x.y) != (prev.y > x.y) && x.x < (prev.x - here.x) * (x.y - here.y) / (prev.y - here.y) + here.x)
+      inside = !inside;
+    prev = here;
+  }
+  return inside;
+}
+
+void SpacetimeSimulation::computeForces(std::size_t begin, std::size_t end) {
+  const SpacetimeParameters& P = parameters_;
+  for (std::size_t v = begin; v < end; ++v) {
+    const int slice = sliceOf_[v];
+    const ElementRecord& element = elements_[sliceElement_[slice]];
+    const Vec3 x = position_[v];
+    Vec3 f;
+
+    // Repulsion and overlap act on the envelope: the skin vertices of each slice.
+    bool inside = false;
+    double gap = kFar;
+    if (isBoundary_[v]) {
+      Hit hits[kMaxHits];
+      const int count = gatherHits(static_cast<int>(v), hits);
+      for (int k = 0; k < count && !inside; ++k)
+        if (hits[k].exact) inside = insideElementAt(hits[k].element, x);
+      if (inside) {
+        // Eq. 4.4 in the slice: every incident triangle pulls the vertex toward its centroid.
+        for (int k = triangleStart_[v]; k < triangleStart_[v + 1]; ++k) {
+          const auto& tri = incidentTriangle_[k];
+          const Vec3 centroid = (position_[tri[0]] + position_[tri[1]] + position_[tri[2]]) / 3.0;
+          f += forces::overlap(x, Vec3{centroid.x, centroid.y, x.t}, P.overlapStrength);
+        }
+        gap = 0.0;
+      } else {
+        for (int k = 0; k < count; ++k) {
+          f += forces::repulsion(x, hits[k].point, P.repulsionStrength, P.soft);
+          if (hits[k].exact) gap = std::min(gap, std::sqrt(hits[k].d2));
+        }
+      }
+    }
+    insideOther_[v] = inside ? 1 : 0;
+
+    // Eq. 4.3: springs, rest lengths from the reference shapes at the current growth.
+    const Vec3 r = referencePoint_[v];
+    for (int k = springStart_[v]; k < springStart_[v + 1]; ++k) {
+      const int o = springOther_[k];
+      f += forces::edge(x, position_[o], distance(r, referencePoint_[o]), springStiffness_[k]);
+    }
+
+    // Eq. 4.5 in (x, y): the container is extruded along t.
+    const Vec2 xy = spatial(x);
+    RegionIndex::Query q = container_.query(xy, false);
+    if (!q.inside) {
+      if (!q.computed) q = container_.query(xy, true);
+      const Vec2 pull = forces::boundary(xy, q.closest, P.boundaryStrength);
+      f += Vec3{pull.x, pull.y, 0.0};
+    }
+    outside_[v] = (!q.inside && q.distance > P.outsideTolerance) ? 1 : 0;
+    if (isBoundary_[v] && q.computed) gap = std::min(gap, q.distance);
+    nearestGap_[v] = gap;
+
+    // Eq. 4.6: the slice turns back toward its reference orientation.
+    if (element.torsionStrength > 0.0) {
+      const Vec2 restDirection = reference_[v] - referenceCentre_[slice];
+      const Vec2 turn = forces::torsion(xy, sliceCentre_[slice], restDirection, element.torsionStrength);
+      f += Vec3{turn.x, turn.y, 0.0};
+    }
+    // Eq. 5.2: the temporal force keeps the vertex near its slice's time.
+    f.t += P.temporalStrength * (restTime_[slice] - x.t);
+    // Target-point spring of a guided element (5.4).
+    if (const Vec2 target = targetPull_[v]; !std::isnan(target.x)) {
+      const Vec2 pull = (target - xy) * P.targetStrength;
+      f += Vec3{pull.x, pull.y, 0.0};
+    }
+    force_[v] = f;
+  }
+}
+
+void SpacetimeSimulation::integrate(std::size_t begin, std::size_t end) {
+  const SpacetimeParameters& P = parameters_;
+  const double keep = 1.0 - P.damping;
+  for (std::size_t v = begin; v < end; ++v) {
+    Vec3 vel = (velocity_[v] + force_[v] * P.timeStep) * keep;
+    const double speed = length(vel);
+    if (speed > P.velocityCap) vel = vel * (P.velocityCap / speed);
+    velocity_[v] = vel;
+    position_[v] += vel * P.timeStep;
+  }
+}
+
+// 5.5.2, constraints 1 and 2: the first and last slices sit at t = 0 and t = T, and every
+// other slice's vertices share their mean t.
+void SpacetimeSimulation::applySliceConstraints(std::size_t elementBegin, std::size_t elementEnd) {
+  for (std::size_t e = elementBegin; e < elementEnd; ++e) {
+    const ElementRecord& element = elements_[e];
+    const int n = element.verticesPerSlice;
+    for (int s = 0; s < slices_; ++s) {
+      const int base = element.vertexBegin + s * n;
+      double t;
+      if (s == 0) {
+        t = 0.0;
+      } else if (s == slices_ - 1) {
+        t = parameters_.timeLength;
+      } else {
+        t = 0.0;
+        for (int v = base; v < base + n; ++v) t += position_[v].t;
+        t /= n;
+      }
+      for (int v = base; v < base + n; ++v) position_[v].t = t;
+      sliceTime_[element.sliceBegin + s] = t;
+    }
+  }
+}
+
+// 5.5.2, constraint 3: each loop's corresponding vertices meet at their mean (x, y).
+void SpacetimeSimulation::applyLoopConstraints() {
+  for (const Loop& loop : loops_) {
+    const ElementRecord& from = elements_[loop.from];
+    const ElementRecord& to = elements_[loop.to];
+    const int last = from.vertexBegin + (slices_ - 1) * from.verticesPerSlice;
+    for (int i = 0; i < from.verticesPerSlice; ++i) {
+      Vec3& a = position_[last + i];
+      Vec3& b = position_[to.vertexBegin + loop.correspondence[i]];
+      const double mx = 0.5 * (a.x + b.x), my = 0.5 * (a.y + b.y);
+      a.x = b.x = mx;
+      a.y = b.y = my;
+    }
+  }
+}
+
+// Per slice: centre, area, overlap and wall flags, nearest gap; then growth (5.5.3).
+void SpacetimeSimulation::updateSlices(std::size_t begin, std::size_t end) {
+  for (std::size_t s = begin; s < end; ++s) {
+    const ElementRecord& element = elements_[sliceElement_[s]];
+    const int base = sliceVertexBegin_[s], n = element.verticesPerSlice, nb = element.mesh->boundaryCount;
+    Vec2 centre;
+    bool overlapping = false, outside = false;
+    double gap = kFar;
+    for (int v = base; v < base + n; ++v) {
+      centre += spatial(position_[v]);
+      overlapping = overlapping || insideOther_[v];
+      outside = outside || outside_[v];
+      gap = std::min(gap, nearestGap_[v]);
+    }
+    sliceCentre_[s] = centre / static_cast<double>(n);
+    double doubledArea = 0.0;
+    for (int k = 0; k < nb; ++k) {
+      const Vec3 a = position_[base + k], b = position_[base + (k + 1) % nb];
+      doubledArea += a.x * b.y - b.x * a.y;
+    }
+    sliceArea_[s] = 0.5 * doubledArea;
+    sliceOverlapping_[s] = overlapping ? 1 : 0;
+    sliceOutside_[s] = outside ? 1 : 0;
+    sliceGap_[s] = gap;
+    if (!overlapping && !outside && growth_[s] < parameters_.maxGrowth)
+      growth_[s] = std::min(parameters_.maxGrowth, growth_[s] + parameters_.growthRate * parameters_.timeStep);
+  }
+}
+
+void SpacetimeSimulation::step() {
+  const std::size_t nv = position_.size(), ns = growth_.size();
+  pool_.parallelFor(nv, 2048, [&](std::size_t b, std::size_t e) { computeReferencePoints(b, e); });
+  buildGrid();
+  pool_.parallelFor(nv, 256, [&](std::size_t b, std::size_t e) { computeForces(b, e); });
+  pool_.parallelFor(nv, 4096, [&](std::size_t b, std::size_t e) { integrate(b, e); });
+  pool_.parallelFor(elements_.size(), 1, [&](std::size_t b, std::size_t e) { applySliceConstraints(b, e); });
+  applyLoopConstraints();
+  pool_.parallelFor(ns, 256, [&](std::size_t b, std::size_t e) { updateSlices(b, e); });
+
+  // Reductions in a fixed order, so they do not depend on the thread count.
+  double area = 0.0, largestGap = 0.0;
+  int growing = 0, overlapping = 0;
+  for (std::size_t s = 0; s < ns; ++s) {
+    area += sliceArea_[s];
+    largestGap = std::max(largestGap, sliceGap_[s]);
+    growing += (!sliceOverlapping_[s] && !sliceOutside_[s] && growth_[s] < parameters_.maxGrowth) ? 1 : 0;
+    overlapping += sliceOverlapping_[s];
+  }
+  fill_ = ns > 0 ? area / (containerArea_ * slices_) : 0.0;
+  largestSliceGap_ = largestGap;
+  growingSlices_ = growing;
+  overlappingSlices_ = overlapping;
+  ++iteration_;
+}
+
+double SpacetimeSimulation::minGrowth() const {
+  return growth_.empty() ? 0.0 : *std::min_element(growth_.begin(), growth_.end());
+}
+
+void SpacetimeSimulation::restoreState(int iteration, std::vector<Vec3> positions, std::vector<Vec3> velocities,
+                                       std::vector<double> growth) {
+  assert(positions.size() == position_.size() && velocities.size() == velocity_.size() && growth.size() == growth_.size());
+  iteration_ = iteration;
+  position_ = std::move(positions);
+  velocity_ = std::move(velocities);
+  growth_ = std::move(growth);
+  for (const ElementRecord& e : elements_)
+    for (int s = 0; s < slices_; ++s) sliceTime_[e.sliceBegin + s] = position_[e.vertexBegin + s * e.verticesPerSlice].t;
+  computeSliceCentres();
+}
+
+void SpacetimeSimulation::computeSliceCentres() {
+  for (std::size_t s = 0; s < growth_.size(); ++s) {
+    const int base = sliceVertexBegin_[s], n = elements_[sliceElement_[s]].verticesPerSlice;
+    Vec2 centre;
+    for (int v = base; v < base + n; ++v) centre += spatial(position_[v]);
+    sliceCentre_[s] = centre / static_cast<double>(n);
+  }
+}
+
+}  // namespace pak
