@@ -60,6 +60,24 @@ ConfigKey booleanKey(std::string name, bool& target);
 ConfigKey stringKey(std::string name, std::string& target);
 ConfigKey seedKey(std::string name, std::uint64_t& target);
 
+// The options of a second table as extra --config keys (for a command whose options come in
+// two structs).
+template <class Options>
+std::vector<ConfigKey> tableKeys(const OptionTable<Options>& table, Options& options) {
+  std::vector<ConfigKey> keys;
+  for (const auto& o : table.numbers)
+    keys.push_back({o.name, [&options, o](const nlohmann::json& value, const std::string& file) {
+                      if (!value.is_number()) throw InputError(file, std::string("\"") + o.name + "\" must be a number");
+                      options.*o.field = value.template get<double>();
+                    }});
+  for (const auto& o : table.integers)
+    keys.push_back({o.name, [&options, o](const nlohmann::json& value, const std::string& file) {
+                      if (!value.is_number_integer()) throw InputError(file, std::string("\"") + o.name + "\" must be an integer");
+                      options.*o.field = value.template get<int>();
+                    }});
+  return keys;
+}
+
 // Reads `file`, a JSON object of option names to values, into the table's options and the
 // extra keys. Options given on the command line win: their keys are skipped. Returns the keys
 // the file set. Unknown keys, wrong types and bad JSON are InputErrors.

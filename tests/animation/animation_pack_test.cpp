@@ -1,0 +1,122 @@
+// packAnimation end to end on a small scene, and frames (thesis 5.4–5.6).
+#include "pak/animation.hpp"
+
+#include <gtest/gtest.h>
+
+#include "animation/animation_fixtures.hpp"
+#include "pak/error.hpp"
+#include "pak/verify.hpp"
+
+namespace pak {
+namespace {
+
+std::vector<Region> artRegions(const Packing& frame) {
+  std::vector<Region> regions;
+  for (const PlacedElement& e : frame.elements) {
+    Region art;
+    for (const Shape& s : e.art) art = unite(art, paintedRegion(s));
+    regions.push_back(art);
+  }
+  return regions;
+}
+
+TEST(AnimationPack, SpinningStarsFillTheDiscWithoutOverlapsAtTheSlices) {
+  const Scene scene = test::discScene();
+  const AnimationScript script = test::spinningStars(8);
+  AnimationOptions options = test::quickAnimationOptions();
+  options.maxIterations = 400;
+  const AnimatedPacking a = packAnimation(scene, {test::starElement("star.svg")}, script, options);
+  ASSERT_EQ(a.elements.size(), 8u);
+  EXPECT_GT(a.iterations, 50);
+  const double containerArea = area(scene.container);
+  for (int s = 0; s < script.slices; ++s) {
+    const double t = a.elements[0].sliceTimes[s];
+    const Packing frame = animationFrame(a, t);
+    PackingCheckOptions check;
+    check.areaTolerance = 1e-4 * containerArea;
+    const PackingCheck result = verifyPacking(artRegions(frame), scene.container, check);
+    EXPECT_EQ(result.overlappingPairs, 0) << "slice " << s;
+    EXPECT_EQ(result.elementsOutside, 0) << "slice " << s;
+    double art = 0.0;
+    for (const Region& r : artRegions(frame)) art += area(r);
+    EXPECT_GT(art / containerArea, 0.15) << "slice " << s;
+  }
+}
+
+TEST(AnimationPack, FrameZeroIsTheFirstSliceAndLoopsClose) {
+  const AnimatedPacking a =
+      packAnimation(test::discScene(), {test::starElement("star.svg")}, test::spinningStars(5), test::quickAnimationOptions());
+  const Packing first = animationFrame(a, 0.0);
+  for (std::size_t e = 0; e < a.elements.size(); ++e) {
+    EXPECT_EQ(a.elements[e].sliceTimes.front(), 0.0);
+    EXPECT_EQ(a.elements[e].sliceTimes.back(), 1.0);
+    ASSERT_EQ(first.elements[e].meshVertices, a.elements[e].slices.front());
+    // The loop constraint joins each element's last slice to its own first one: the star has
+    // turned by 72°, so the outline (not the vertex order) is the same.
+    EXPECT_NEAR(std::abs(signedArea(Ring(a.elements[e].slices.back().begin(),
+                                         a.elements[e].slices.back().begin() + a.elements[e].mesh.boundaryCount))),
+                std::abs(signedArea(first.elements[e].skin)), 1e-6 * area(a.container));
+  }
+}
+
+TEST(AnimationPack, DeterministicWhateverTheThreadCount) {
+  AnimationOptions one = test::quickAnimationOptions(), two = one;
+  two.threads = 2;
+  const AnimatedPacking a = packAnimation(test::discScene(), {test::starElement("s")}, test::spinningStars(6), one);
+  const AnimatedPacking b = packAnimation(test::discScene(), {test::starElement("s")}, test::spinningStars(6), two);
+  ASSERT_EQ(a.elements.size(), b.elements.size());
+  for (std::size_t e = 0; e < a.elements.size(); ++e) ASSERT_EQ(a.elements[e].slices, b.elements[e].slices);
+}
+
+TEST(AnimationPack, ResumingFromACheckpointGivesTheSameResult) {
+  AnimationOptions options = test::quickAnimationOptions();
+  AnimationState saved;
+  AnimationCallbacks callbacks;
+  callbacks.checkpointEvery = 25;
+  callbacks.onCheckpoint = [&](const AnimationState& s) { if (s.iteration == 25) saved = s; };
+  const AnimatedPacking straight = packAnimation(test::discScene(), {test::starElement("s")}, test::spinningStars(5), options, callbacks);
+  ASSERT_EQ(saved.iteration, 25);
+  const AnimatedPacking resumed = packAnimation(test::discScene(), {test::starElement("s")}, test::spinningStars(5), options, {}, &saved);
+  EXPECT_EQ(resumed.iterations, straight.iterations);
+  for (std::size_t e = 0; e < straight.elements.size(); ++e) ASSERT_EQ(straight.elements[e].slices, resumed.elements[e].slices);
+}
+
+TEST(AnimationPack, GuidedElementFollowsItsTargets) {
+  AnimationScript script = test::spinningStars(3);
+  AnimatedElementSpec guided;
+  guided.id = "runner";
+  guided.svg = "star.svg";
+  guided.targets = {{0.0, {150, 250}, {}, {}}, {0.5, {350, 250}, {}, {}}, {1.0, {150, 250}, {}, {}}};
+  script.elements.push_back(guided);
+  const AnimatedPacking a = packAnimation(test::discScene(), {test::starElement("star.svg"), test::starElement("star.svg")},
+                                          script, test::quickAnimationOptions());
+  const AnimatedElement* runner = nullptr;
+  for (const AnimatedElement& e : a.elements)
+    if (e.guided) runner = &e;
+  ASSERT_NE(runner, nullptr);
+  auto centreAt = [&](double t) {
+    const Packing f = animationFrame(a, t);
+    Vec2 c;
+    const PlacedElement& e = f.elements[runner - a.elements.data()];
+    for (Vec2 p : e.meshVertices) c += p;
+    return c / static_cast<double>(e.meshVertices.size());
+  };
+  EXPECT_LT(distance(centreAt(0.0), Vec2{150, 250}), 40.0);
+  EXPECT_LT(distance(centreAt(0.5), Vec2{350, 250}), 40.0);
+  EXPECT_GT(distance(centreAt(0.5), centreAt(0.0)), 120.0);
+}
+
+TEST(AnimationPack, BadInputIsAnInputError) {
+  AnimationScript script = test::spinningStars(2);
+  EXPECT_THROW(packAnimation(test::discScene(), {}, script), InputError);  // no art for the element
+  AnimationOptions bad;
+  bad.slices = 1;
+  EXPECT_THROW(packAnimation(test::discScene(), {test::starElement("s")}, script, bad), InputError);
+  script.elements[0].animation.handles = {{"tail", {{0.0, {0, 0}}, {1.0, {5, 0}}}}};
+  EXPECT_THROW(packAnimation(test::discScene(), {test::starElement("s")}, script), InputError);  // no such handle
+  Scene empty;
+  EXPECT_THROW(packAnimation(empty, {test::starElement("s")}, test::spinningStars(2)), InputError);
+}
+
+}  // namespace
+}  // namespace pak

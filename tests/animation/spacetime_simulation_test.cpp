@@ -1,0 +1,129 @@
+// The spacetime simulation's hard constraints (thesis 5.5.2), determinism and checkpoints.
+#include "pak/spacetime_simulation.hpp"
+
+#include <gtest/gtest.h>
+
+#include "animation/animation_fixtures.hpp"
+#include "pak/canonical_frame.hpp"
+
+namespace pak {
+namespace {
+
+// Two elements of one star mesh in a disc; element 0 loops to element 1 and 1 to 0.
+struct TwoTubes {
+  ElementMesh mesh;
+  Region container{Polygon{test::discRing({500, 500}, 450), {}}};
+  RegionIndex index{container, 10.0};
+  ThreadPool pool;
+  SpacetimeSimulation sim;
+  static constexpr int kSlices = 6;
+
+  explicit TwoTubes(int threads, double timeStrength = 4.0, bool crossLoop = true)
+      : pool(threads), sim(index, area(container), kSlices, parameters(timeStrength), pool) {
+    ElementArt star = test::starElement("star");
+    std::vector<Shape> art = star.shapes;
+    for (Shape& s : art)
+      for (Vec2& p : s.subpaths[0].points) p = (p - Vec2{50, 50}) * 3.0;
+    ElementMeshOptions meshOptions;
+    meshOptions.gap = 8.0;
+    meshOptions.spacing = 25.0;
+    mesh = buildElementMesh(art, {Polygon{art[0].subpaths[0].points, {}}}, meshOptions);
+    for (Vec2 at : {Vec2{420, 500}, Vec2{600, 500}}) {
+      SpacetimeElementSetup setup;
+      setup.mesh = &mesh;
+      for (int s = 0; s < kSlices; ++s) {
+        for (Vec2 p : mesh.mesh.vertices) setup.reference.push_back(at + rotated(p, 0.2 * s) + Vec2{10.0 * s, 0});
+        setup.referenceCentre.push_back(at + Vec2{10.0 * s, 0});
+      }
+      setup.initialGrowth = 0.5;
+      sim.addElement(setup);
+    }
+    std::vector<int> identity(mesh.mesh.vertices.size());
+    for (std::size_t i = 0; i < identity.size(); ++i) identity[i] = static_cast<int>(i);
+    if (crossLoop) {
+      sim.addLoop(0, 1, identity);
+      sim.addLoop(1, 0, identity);
+    }
+    sim.finalize(Box{{0, 0}, {1000, 1000}});
+  }
+  static SpacetimeParameters parameters(double timeStrength) {
+    SpacetimeParameters p;
+    p.timeStrength = timeStrength;
+    p.growthRate = 0.05;
+    return p;
+  }
+};
+
+TEST(SpacetimeSimulation, SliceConstraintsHoldAfterEveryStep) {
+  TwoTubes tubes(1);
+  const int n = tubes.sim.verticesPerSlice(0);
+  const double T = SpacetimeParameters{}.timeLength;
+  for (int step = 0; step < 40; ++step) {
+    tubes.sim.step();
+    const auto& x = tubes.sim.positions();
+    for (int e = 0; e < 2; ++e) {
+      const int begin = tubes.sim.vertexBegin(e);
+      for (int s = 0; s < TwoTubes::kSlices; ++s) {
+        const double t0 = x[begin + s * n].t;
+        if (s == 0) ASSERT_EQ(t0, 0.0);                          // end-to-end
+        if (s == TwoTubes::kSlices - 1) ASSERT_EQ(t0, T);
+        for (int v = 0; v < n; ++v) ASSERT_EQ(x[begin + s * n + v].t, t0) << "simultaneity, slice " << s;
+      }
+    }
+    // Loops: element 0's last slice on element 1's first and the other way round.
+    const int last = (TwoTubes::kSlices - 1) * n;
+    for (int v = 0; v < n; ++v) {
+      EXPECT_EQ(spatial(x[tubes.sim.vertexBegin(0) + last + v]), spatial(x[tubes.sim.vertexBegin(1) + v]));
+      EXPECT_EQ(spatial(x[tubes.sim.vertexBegin(1) + last + v]), spatial(x[tubes.sim.vertexBegin(0) + v]));
+    }
+  }
+}
+
+TEST(SpacetimeSimulation, GrowsFreeSlicesAndKeepsTubesApart) {
+  TwoTubes tubes(1, 4.0, false);
+  const double before = tubes.sim.minGrowth();
+  for (int step = 0; step < 50; ++step) tubes.sim.step();
+  EXPECT_GT(tubes.sim.minGrowth(), before);
+  EXPECT_EQ(tubes.sim.overlappingSlices(), 0);
+  for (const Vec3& p : tubes.sim.positions()) ASSERT_TRUE(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.t));
+}
+
+TEST(SpacetimeSimulation, SameResultWithOneOrTwoThreads) {
+  TwoTubes one(1), two(2);
+  for (int step = 0; step < 30; ++step) one.sim.step(), two.sim.step();
+  ASSERT_EQ(one.sim.positions().size(), two.sim.positions().size());
+  for (std::size_t v = 0; v < one.sim.positions().size(); ++v) ASSERT_EQ(one.sim.positions()[v], two.sim.positions()[v]);
+  EXPECT_EQ(one.sim.growth(), two.sim.growth());
+}
+
+TEST(SpacetimeSimulation, RestoredStateContinuesBitIdentically) {
+  TwoTubes straight(1), resumed(1);
+  for (int step = 0; step < 15; ++step) straight.sim.step();
+  resumed.sim.restoreState(straight.sim.iteration(), straight.sim.positions(), straight.sim.velocities(), straight.sim.growth());
+  for (int step = 0; step < 15; ++step) straight.sim.step(), resumed.sim.step();
+  EXPECT_EQ(resumed.sim.iteration(), straight.sim.iteration());
+  for (std::size_t v = 0; v < straight.sim.positions().size(); ++v)
+    ASSERT_EQ(straight.sim.positions()[v], resumed.sim.positions()[v]);
+}
+
+TEST(SpacetimeSimulation, StiffTimeSpringsKeepConsecutiveSlicesCloser) {
+  // Thesis Fig. 5.21: stronger time springs, smoother motion. Measured as the mean jump of a
+  // vertex between consecutive slices relative to the reference motion.
+  auto jitter = [](double k) {
+    TwoTubes tubes(1, k);
+    for (int step = 0; step < 60; ++step) tubes.sim.step();
+    const int n = tubes.sim.verticesPerSlice(0);
+    const auto& x = tubes.sim.positions();
+    double sum = 0.0;
+    for (int s = 1; s + 1 < TwoTubes::kSlices; ++s)
+      for (int v = 0; v < n; ++v) {
+        const Vec2 a = spatial(x[s * n + v] - x[(s - 1) * n + v]), b = spatial(x[(s + 1) * n + v] - x[s * n + v]);
+        sum += length(b - a);  // second difference: how much the motion changes between slices
+      }
+    return sum;
+  };
+  EXPECT_LT(jitter(40.0), jitter(0.05));
+}
+
+}  // namespace
+}  // namespace pak
