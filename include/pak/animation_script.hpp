@@ -1,6 +1,6 @@
 #pragma once
 // What an AnimationPak run animates (thesis 5.3–5.4), as read from the animation file (JSON;
-// see docs/animationpak.md): per element, transform tracks, handle trajectories for the
+// see docs/animation-format.md): per element, transform tracks, handle trajectories for the
 // as-rigid-as-possible shape animation, guided targets, loops and a preferred orientation.
 #include <optional>
 #include <string>

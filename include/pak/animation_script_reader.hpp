@@ -1,5 +1,5 @@
 #pragma once
-// Reads an AnimationPak animation file (JSON, format in docs/animationpak.md). Element paths
+// Reads an AnimationPak animation file (JSON, format in docs/animation-format.md). Element paths
 // are resolved against the file's folder. Throws InputError naming the file and the field
 // ("anim.json: elements[2].rotation[1]: t must be within [0, 1]") for anything malformed.
 #include <string>

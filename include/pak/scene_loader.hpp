@@ -28,7 +28,9 @@ struct SceneOptions {
 Scene sceneFromDocument(const SvgDocument& document, const SceneOptions& sceneOptions);
 Scene loadScene(const std::string& path, const SceneOptions& sceneOptions, const SvgReadOptions& = {});
 
-// All visible shapes of the document form one element; an optional <path id="spine">.
+// All visible shapes of the document form one element; an optional <path id="spine">; shapes
+// with an id `handle-NAME` are AnimationPak handles (their box's centre), not art, and a name
+// given twice is an InputError.
 // Throws InputError when the element paints no area.
 ElementArt elementFromDocument(const SvgDocument& document);
 // An SVG whose root has several top-level groups gives one element per group.

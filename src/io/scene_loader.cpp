@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,20 @@ std::string shapeName(const Shape& shape, std::size_t index) {
 
 // Grid of the boolean operations: fine relative to the document, so that icons drawn in a
 // 24 × 24 box and posters in millimetres are resolved alike.
+// An AnimationPak handle: a shape whose id starts with `handle-` marks a point (its bounding
+// box's centre) and is not art. Nothing else: nullopt.
+std::optional<ElementHandle> handleOf(const Shape& shape, const std::string& file, std::size_t index) {
+  static const std::string prefix = "handle-";
+  if (lowerCased(shape.id.substr(0, prefix.size())) != prefix) return std::nullopt;
+  const std::string name = shape.id.substr(prefix.size());
+  if (name.empty()) throw InputError(file, "shape " + shapeName(shape, index) + ": a handle needs a name after \"handle-\"");
+  Box box;
+  for (const Subpath& subpath : shape.subpaths)
+    for (Vec2 p : subpath.points) box.add(p);
+  if (box.empty()) throw InputError(file, "handle \"" + name + "\" (" + shape.tag + ") has no points");
+  return ElementHandle{name, box.center()};
+}
+
 ClipOptions clipOptionsFor(const Box& box) {
   ClipOptions options;
   const double extent = box.empty() ? 0.0 : std::max(box.width(), box.height());
@@ -266,6 +281,13 @@ ElementArt elementFromDocument(const SvgDocument& document) {
   std::vector<std::size_t> artIndices;
   for (std::size_t i = 0; i < document.shapes.size(); ++i) {
     const Shape& shape = document.shapes[i];
+    if (std::optional<ElementHandle> handle = handleOf(shape, document.file, i)) {
+      for (const ElementHandle& other : element.handles)
+        if (other.name == handle->name)
+          throw InputError(document.file, "handle \"" + handle->name + "\" is given twice (id \"" + shape.id + "\")");
+      element.handles.push_back(std::move(*handle));
+      continue;
+    }
     const bool namedSpine = lowerCased(shape.id) == "spine";
     if (namedSpine || shape.layer == "spines" || shape.layer == "guides") {
       // The FLOWPAK spine: from its first to its last point.
