@@ -15,7 +15,11 @@ struct AnimationOutputOptions {
   double duration = 10.0;  // seconds the whole sequence lasts (one loop)
   bool loop = true;        // play forever (GIF loop count 0, SVG repeatCount="indefinite")
   int width = 600;         // raster outputs: pixels across
+  // nullopt: transparent (PNG frames, contact sheet; GIF: one transparent index, so hard
+  // edges; video has no alpha and gets white).
   std::optional<Color> background = Color{255, 255, 255, 1.0};
+  int svgPrecision = -1;   // SVG decimals; -1: SVG frames as the SVG writer, animated SVG from
+                           // the view box size (about 1/10000 of it)
 };
 
 // frame-0000.png, frame-0001.png … in `folder` (created if missing).

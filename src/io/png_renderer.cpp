@@ -1,4 +1,5 @@
-// Renders a Drawing with cairo into an anti-aliased ARGB image and saves it as PNG.
+// Renders a Drawing with cairo into an anti-aliased ARGB image and saves it as PNG, or hands
+// the pixels to the animation writers (drawing_raster.hpp).
 // Every call owns its surface and context, so concurrent calls (tests, batch renders) are safe.
 #include "pak/png_renderer.hpp"
 
@@ -6,19 +7,17 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <memory>
 #include <string>
 
 #include "cairo_output.hpp"
+#include "drawing_raster.hpp"
 #include "pak/atomic_file.hpp"
 #include "pak/error.hpp"
 
 namespace pak {
 namespace {
-
-// Big enough for print previews, small enough that a typo in --width cannot eat the memory
-// (16384² × 4 bytes = 1 GiB), and inside cairo's 32767-pixel limit.
-constexpr int kMaxPixels = 16384;
 
 using cairo_output::appendToString;
 using cairo_output::ContextPtr;
@@ -107,60 +106,107 @@ void drawGroup(cairo_t* context, const DrawingGroup& group) {
 
 }  // namespace
 
-void writePngFile(const Drawing& drawing, const std::string& path, const PngOptions& options) {
-  // Check the destination first: a missing folder should fail before seconds of rendering.
-  (void)temporaryPathFor(path);  // throws InputError when the folder is missing or read-only
+namespace raster {
 
+PixelSize pixelSize(const Drawing& drawing, const PngOptions& options, const std::string& where) {
   if (options.width < 1 || options.width > kMaxPixels)
-    throw InputError(path, "PNG width " + std::to_string(options.width) + " is out of range (1 to " +
-                               std::to_string(kMaxPixels) + " pixels)");
+    throw InputError(where, "PNG width " + std::to_string(options.width) + " is out of range (1 to " +
+                                std::to_string(kMaxPixels) + " pixels)");
+  if (options.height > kMaxPixels)
+    throw InputError(where, "PNG height " + std::to_string(options.height) + " is out of range (1 to " +
+                                std::to_string(kMaxPixels) + " pixels)");
+  if (options.height > 0) return {options.width, options.height};
   Box box = drawingBox(drawing);
-  double scale = options.width / box.width();
-  double exactHeight = std::round(box.height() * scale);
+  double exactHeight = std::round(box.height() * (options.width / box.width()));
   if (!(exactHeight <= kMaxPixels))
-    throw InputError(path, "PNG would be " + std::to_string(options.width) + " x " +
-                               std::to_string(static_cast<long long>(std::min(exactHeight, 1e15))) +
-                               " pixels; at most " + std::to_string(kMaxPixels) + " a side (lower --width)");
-  int width = options.width;
-  int height = std::max(1, static_cast<int>(exactHeight));
+    throw InputError(where, "PNG would be " + std::to_string(options.width) + " x " +
+                                std::to_string(static_cast<long long>(std::min(exactHeight, 1e15))) +
+                                " pixels; at most " + std::to_string(kMaxPixels) + " a side (lower --width)");
+  return {options.width, std::max(1, static_cast<int>(exactHeight))};
+}
 
-  SurfacePtr surface(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, width, height));
+void paintDrawing(cairo_t* context, const Drawing& drawing, double width, double height) {
+  cairo_save(context);
+  // Map the box onto the rectangle like SVG's default preserveAspectRatio (xMidYMid meet): one
+  // scale for both axes, centred; a rounded height leaves sub-pixel slack, centred too.
+  Box box = drawingBox(drawing);
+  double uniform = std::min(width / box.width(), height / box.height());
+  cairo_translate(context, (width - box.width() * uniform) / 2.0, (height - box.height() * uniform) / 2.0);
+  cairo_scale(context, uniform, uniform);
+  cairo_translate(context, -box.min.x, -box.min.y);
+  // SVG's defaults (cairo's miter limit is 10, SVG's 4).
+  cairo_set_line_join(context, CAIRO_LINE_JOIN_MITER);
+  cairo_set_line_cap(context, CAIRO_LINE_CAP_BUTT);
+  cairo_set_miter_limit(context, 4.0);
+  for (const DrawingGroup& group : drawing.groups) drawGroup(context, group);
+  cairo_restore(context);
+}
+
+SurfacePtr renderSurface(const Drawing& drawing, const PngOptions& options, const std::string& where) {
+  PixelSize size = pixelSize(drawing, options, where);
+  SurfacePtr surface(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, size.width, size.height));
   if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS)
-    throw InputError(path, std::string("cannot create a ") + std::to_string(width) + " x " +
-                               std::to_string(height) + " image: " +
-                               cairo_status_to_string(cairo_surface_status(surface.get())));
+    throw InputError(where, std::string("cannot create a ") + std::to_string(size.width) + " x " +
+                                std::to_string(size.height) + " image: " +
+                                cairo_status_to_string(cairo_surface_status(surface.get())));
   ContextPtr context(cairo_create(surface.get()));
   cairo_set_antialias(context.get(), CAIRO_ANTIALIAS_GOOD);
-
   // A new image surface is fully transparent; paint the background if there is one.
   if (options.background) {
     setColor(context.get(), *options.background, 1.0);
     cairo_paint(context.get());
   }
-
-  // Map the box onto the image like SVG's default preserveAspectRatio (xMidYMid meet): one
-  // scale for both axes, centred; the height was rounded, so centre the sub-pixel slack.
-  double uniform = std::min(width / box.width(), height / box.height());
-  cairo_translate(context.get(), (width - box.width() * uniform) / 2.0, (height - box.height() * uniform) / 2.0);
-  cairo_scale(context.get(), uniform, uniform);
-  cairo_translate(context.get(), -box.min.x, -box.min.y);
-  // SVG's defaults (cairo's miter limit is 10, SVG's 4).
-  cairo_set_line_join(context.get(), CAIRO_LINE_JOIN_MITER);
-  cairo_set_line_cap(context.get(), CAIRO_LINE_CAP_BUTT);
-  cairo_set_miter_limit(context.get(), 4.0);
-
-  for (const DrawingGroup& group : drawing.groups) drawGroup(context.get(), group);
-
+  paintDrawing(context.get(), drawing, size.width, size.height);
   if (cairo_status(context.get()) != CAIRO_STATUS_SUCCESS)
-    throw InputError(path, std::string("cannot render: ") + cairo_status_to_string(cairo_status(context.get())));
+    throw InputError(where, std::string("cannot render: ") + cairo_status_to_string(cairo_status(context.get())));
   cairo_surface_flush(surface.get());
+  return surface;
+}
 
+RgbaImage toRgba(cairo_surface_t* surface) {
+  cairo_surface_flush(surface);
+  RgbaImage image;
+  image.width = cairo_image_surface_get_width(surface);
+  image.height = cairo_image_surface_get_height(surface);
+  const int stride = cairo_image_surface_get_stride(surface);
+  const unsigned char* data = cairo_image_surface_get_data(surface);
+  image.rgba.resize(static_cast<std::size_t>(image.width) * image.height * 4);
+  std::uint8_t* out = image.rgba.data();
+  for (int y = 0; y < image.height; ++y) {
+    const auto* row = reinterpret_cast<const std::uint32_t*>(data + static_cast<std::size_t>(y) * stride);
+    for (int x = 0; x < image.width; ++x, out += 4) {
+      std::uint32_t word = row[x];  // ARGB32: alpha in the top byte, in native byte order
+      std::uint32_t a = word >> 24;
+      auto channel = [&](int shift) -> std::uint8_t {
+        std::uint32_t premultiplied = (word >> shift) & 0xffu;
+        return a == 0 ? 0 : static_cast<std::uint8_t>(std::min<std::uint32_t>(255, (premultiplied * 255 + a / 2) / a));
+      };
+      out[0] = channel(16);
+      out[1] = channel(8);
+      out[2] = channel(0);
+      out[3] = static_cast<std::uint8_t>(a);
+    }
+  }
+  return image;
+}
+
+}  // namespace raster
+
+void writePngFile(const Drawing& drawing, const std::string& path, const PngOptions& options) {
+  // Check the destination first: a missing folder should fail before seconds of rendering.
+  (void)temporaryPathFor(path);  // throws InputError when the folder is missing or read-only
+  SurfacePtr surface = raster::renderSurface(drawing, options, path);
   // Encode in memory, then reuse the atomic writer: one code path for every output file.
   std::string png;
   cairo_status_t status = cairo_surface_write_to_png_stream(surface.get(), appendToString, &png);
   if (status != CAIRO_STATUS_SUCCESS)
     throw InputError(path, std::string("cannot encode PNG: ") + cairo_status_to_string(status));
   writeFileAtomically(path, png);
+}
+
+RgbaImage renderToImage(const Drawing& drawing, const PngOptions& options) {
+  SurfacePtr surface = raster::renderSurface(drawing, options, "");
+  return raster::toRgba(surface.get());
 }
 
 }  // namespace pak

@@ -1,0 +1,60 @@
+#pragma once
+// The pieces of Pak's SVG output, shared by the static writer (svg_writer.cpp) and the
+// animated one (animated_svg_writer.cpp), so both write the same groups, ids, classes and paint.
+#include <functional>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "pak/drawing.hpp"
+
+namespace pak::svg_builder {
+
+// Escapes text for a double-quoted XML attribute; drops characters XML 1.0 forbids.
+std::string escapeAttribute(const std::string& text);
+// Whether `name` is a valid XML name (attribute names come from code; invalid ones are dropped).
+bool isXmlName(const std::string& name);
+// Fixed-point with `precision` decimals, trailing zeros trimmed, "-0" written as "0". Throws
+// InputError for a non-finite value.
+std::string formatNumber(double value, int precision);
+std::string hexColor(const Color& color);
+// The `d` of a shape: M/L/Z with line segments, or cubic Béziers fitted within curveTolerance > 0.
+std::string pathData(const Shape& shape, int precision, double curveTolerance);
+// The drawing's box, or the bounds of what it draws when the box was left empty.
+Box drawingBox(const Drawing& drawing);
+
+class SvgBuilder {
+ public:
+  SvgBuilder(int precision, double curveTolerance) : precision_(precision), curveTolerance_(curveTolerance) {}
+
+  // Optional: markup written inside a shape's <path> (e.g. an <animate>); `d` is the shape's
+  // path data. Empty: the path is self-closing.
+  std::function<std::string(const Shape& shape, const std::string& d, int depth)> shapeChildren;
+  // Appended to every group and shape id (and clip id), to keep ids unique when one document
+  // holds several copies of a drawing.
+  std::string idSuffix;
+
+  // The XML declaration and the <svg> root sized by the first drawing, with the namespaces and
+  // <defs> of copied markup in all of them.
+  void beginDocument(const std::vector<const Drawing*>& drawings);
+  void endDocument() { out_ += "</svg>\n"; }
+  void writeGroup(const DrawingGroup& group, int depth);
+  void writeShape(const Shape& shape, int depth);
+
+  void attribute(const std::string& name, const std::string& value);
+  void indent(int depth) { out_.append(static_cast<std::size_t>(depth) * 2, ' '); }
+  std::string& text() { return out_; }
+  int precision() const { return precision_; }
+
+ private:
+  void declareNamespaces(const std::vector<std::pair<std::string, std::string>>& namespaces, bool root);
+
+  int precision_;
+  double curveTolerance_;
+  int clipCount_ = 0;
+  std::string out_;
+  std::map<std::string, std::string> rootNamespaces_;  // prefix -> URI bound on the root
+};
+
+}  // namespace pak::svg_builder
