@@ -24,7 +24,7 @@ namespace {
 const NumberOption<AnimationOptions> kNumberOptions[] = {
     {"element-area", &AnimationOptions::elementArea, "an element's nominal skin area as a fraction of the container (0: 1 / element count)"},
     {"gap", &AnimationOptions::gap, "d_gap as a fraction of the nominal element size (thesis 0.08)"},
-    {"mesh-spacing", &AnimationOptions::meshSpacing, "slice mesh spacing, canonical units (0: nominal element size / 5)"},
+    {"mesh-spacing", &AnimationOptions::meshSpacing, "slice mesh spacing, canonical units (0: nominal element size / 4)"},
     {"initial-scale", &AnimationOptions::initialScale, "elements start shrunk to this fraction of their size (thesis 0.05–0.1)"},
     {"torsion", &AnimationOptions::torsionStrength, "k_tor for elements with a preferred orientation"},
     {"closeness", &AnimationOptions::closeness, "stop when every slice is this close to a neighbour or the wall (canonical units; thesis 0.006 of the container)"},
@@ -133,6 +133,13 @@ int runAnimate(AnimateArguments& args) {
   const AnimatedPacking animation =
       packAnimation(scene, library, script, args.options, callbacks, args.resume.empty() ? nullptr : &resumed);
   const auto simulated = Clock::now();
+  if (std::getenv("PAK_DEBUG_GROWTH"))
+    for (const AnimatedElement& e : animation.elements) {
+      if (!e.guided) continue;
+      std::fprintf(stderr, "%s:", e.id.c_str());
+      for (std::size_t s = 0; s < e.sliceGrowth.size(); s += 3) std::fprintf(stderr, " %.2f", e.sliceGrowth[s]);
+      std::fprintf(stderr, "\n");
+    }
 
   // Frames at evenly spaced t (5.6); a loop's last frame would repeat the first.
   const int frameCount = args.frames > 0 ? args.frames : script.frames;

@@ -25,7 +25,7 @@ struct AnimationOptions {
   // 0: 1 / (number of elements), the size at which they would exactly fill it.
   double elementArea = 0.0;
   double gap = 0.08;              // d_gap as a fraction of the nominal element size (thesis 0.08)
-  double meshSpacing = 0.0;       // slice mesh spacing, canonical units; 0: nominal size / 5
+  double meshSpacing = 0.0;       // slice mesh spacing, canonical units; 0: nominal size / 4
   double initialScale = 0.1;      // elements start shrunk to this (thesis 5–10 %), or less to fit
   SpacetimeParameters simulation; // forces, integration, growth, grid (canonical units)
   double torsionStrength = 10.0;  // k_tor of elements with a preferred orientation

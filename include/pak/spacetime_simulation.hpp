@@ -57,9 +57,17 @@ class SpacetimeSimulation {
                       const SpacetimeParameters& parameters, ThreadPool& pool);
 
   int addElement(const SpacetimeElementSetup& setup);
-  // Loop constraint (5.5.2): vertex i of `from`'s last slice and vertex correspondence[i] of
-  // `to`'s first slice are moved to their mean (x, y) after every step.
-  void addLoop(int from, int to, std::vector<int> correspondence);
+  // Loop constraint (5.5.2): `from`'s last slice joins `to`'s first slice (same mesh). The
+  // thesis moves corresponding vertices to their mean; here the slices must agree up to the
+  // scripted turn and scale between them, `turn` = (s cos θ, s sin θ) (see loopTurn), so a star
+  // that turns by 72° over the loop is joined to itself without being squeezed. With no turn,
+  // (1, 0), this is the thesis's rule exactly.
+  void addLoop(int from, int to, Vec2 turn);
+  // The similarity (s cos θ, s sin θ) that best maps the centred points `first` onto `last`.
+  static Vec2 loopTurn(const Vec2* first, const Vec2* last, int count);
+  // Moves every vertex left outside the container onto its boundary, a hair inside (the
+  // boundary force is a penalty, so pressed vertices rest slightly outside). Returns how many.
+  int projectInside();
   // Builds the spring tables, the envelope and the grid over `area` (canonical x, y).
   void finalize(const Box& area);
 
@@ -153,7 +161,7 @@ class SpacetimeSimulation {
   Vec3 gridOrigin_;
   int nx_ = 0, ny_ = 0, nt_ = 0;
   // Loops.
-  struct Loop { int from, to; std::vector<int> correspondence; };
+  struct Loop { int from, to; Vec2 turn; };
   std::vector<Loop> loops_;
   // Build-time only.
   struct PendingSpring { int a, b; double stiffness; };

@@ -109,31 +109,6 @@ GuidePose guidePose(const std::vector<GuideTarget>& targets, const CanonicalFram
 
 Vec2 rotate(Vec2 p, double angle) { return rotated(p, angle); }
 
-// Vertex i of one slice ↔ the vertex of another slice in the same place, both centred: the
-// skin rings by the cyclic shift that fits best, interior vertices by nearest neighbour.
-std::vector<int> sliceCorrespondence(const ElementMesh& mesh, const Vec2* from, Vec2 fromCentre, const Vec2* to,
-                                     Vec2 toCentre) {
-  const int n = static_cast<int>(mesh.mesh.vertices.size()), nb = mesh.boundaryCount;
-  std::vector<int> result(n);
-  int bestShift = 0;
-  double best = std::numeric_limits<double>::infinity();
-  for (int shift = 0; shift < nb; ++shift) {
-    double cost = 0.0;
-    for (int i = 0; i < nb && cost < best; ++i)
-      cost += lengthSquared((from[i] - fromCentre) - (to[(i + shift) % nb] - toCentre));
-    if (cost < best) best = cost, bestShift = shift;
-  }
-  for (int i = 0; i < nb; ++i) result[i] = (i + bestShift) % nb;
-  for (int i = nb; i < n; ++i) {
-    int nearest = nb;
-    double d = std::numeric_limits<double>::infinity();
-    for (int j = nb; j < n; ++j)
-      if (double dj = lengthSquared((from[i] - fromCentre) - (to[j] - toCentre)); dj < d) d = dj, nearest = j;
-    result[i] = nearest;
-  }
-  return result;
-}
-
 }  // namespace
 
 AnimatedPacking packAnimation(const Scene& scene, const Library& library, const AnimationScript& script,
@@ -158,7 +133,7 @@ AnimatedPacking packAnimation(const Scene& scene, const Library& library, const 
   const double nominalArea = (options.elementArea > 0.0 ? options.elementArea : 1.0 / total) * containerArea;
   const double nominalSize = std::sqrt(nominalArea);
   const double gap = options.gap * nominalSize;
-  const double spacing = options.meshSpacing > 0.0 ? options.meshSpacing : nominalSize / 5.0;
+  const double spacing = options.meshSpacing > 0.0 ? options.meshSpacing : nominalSize / 4.0;
 
   // One common scale keeps the library's relative sizes; the mean skin area is the nominal one.
   double meanArt = 0.0;
@@ -336,11 +311,10 @@ AnimatedPacking packAnimation(const Scene& scene, const Library& library, const 
       if (toType.meshIndex != type.meshIndex)
         throw InputError("", "element '" + type.spec->id + "' loops to '" + toType.spec->id +
                                  "', drawn from another SVG; a loop joins copies of one drawing");
-      const ElementMesh& mesh = meshes[type.meshIndex].mesh;
-      const std::size_t n = mesh.mesh.vertices.size();
+      const int n = static_cast<int>(meshes[type.meshIndex].mesh.mesh.vertices.size());
       sim.addLoop(static_cast<int>(e), to,
-                  sliceCorrespondence(mesh, instances[e].reference.data() + (slices - 1) * n, instances[e].centre.back(),
-                                      instances[to].reference.data(), instances[to].centre.front()));
+                  SpacetimeSimulation::loopTurn(instances[to].reference.data(),
+                                                instances[e].reference.data() + (slices - 1) * n, n));
     }
   }
   sim.finalize(Box{{0.0, 0.0}, {kCanonicalSide, kCanonicalSide}});
@@ -383,6 +357,7 @@ AnimatedPacking packAnimation(const Scene& scene, const Library& library, const 
     }
   }
   if (callbacks.onProgress) callbacks.onProgress(progress());
+  sim.projectInside();  // after any checkpoint: a resumed run projects the same state
 
   // --- Results in input coordinates.
   for (std::size_t e = 0; e < instances.size(); ++e) {

@@ -79,9 +79,34 @@ int SpacetimeSimulation::addElement(const SpacetimeElementSetup& setup) {
   return element;
 }
 
-void SpacetimeSimulation::addLoop(int from, int to, std::vector<int> correspondence) {
-  assert(static_cast<int>(correspondence.size()) == elements_[from].verticesPerSlice);
-  loops_.push_back({from, to, std::move(correspondence)});
+void SpacetimeSimulation::addLoop(int from, int to, Vec2 turn) {
+  assert(elements_[from].mesh == elements_[to].mesh && lengthSquared(turn) > 0.0);
+  loops_.push_back({from, to, turn});
+}
+
+Vec2 SpacetimeSimulation::loopTurn(const Vec2* first, const Vec2* last, int count) {
+  Vec2 cf, cl;
+  for (int i = 0; i < count; ++i) cf += first[i], cl += last[i];
+  cf = cf / static_cast<double>(count), cl = cl / static_cast<double>(count);
+  double norm = 0.0, c = 0.0, s = 0.0;
+  for (int i = 0; i < count; ++i) {
+    const Vec2 p = first[i] - cf, q = last[i] - cl;
+    norm += lengthSquared(p), c += dot(p, q), s += cross(p, q);
+  }
+  return norm > 0.0 ? Vec2{c / norm, s / norm} : Vec2{1.0, 0.0};
+}
+
+int SpacetimeSimulation::projectInside() {
+  constexpr double kInsideMargin = 1e-3;  // canonical units
+  int moved = 0;
+  for (Vec3& x : position_) {
+    const RegionIndex::Query q = container_.query(spatial(x), true);
+    if (q.inside) continue;
+    const Vec2 p = q.closest + normalized(q.closest - spatial(x)) * kInsideMargin;
+    x.x = p.x, x.y = p.y;
+    ++moved;
+  }
+  return moved;
 }
 
 void SpacetimeSimulation::finalize(const Box& area) {
@@ -216,19 +241,47 @@ void SpacetimeSimulation::buildGrid() {
   cellGroupStart_[cells] = static_cast<int>(groupCount);
 }
 
+namespace {
+
+// The cells around a query point: the 3 × 3 × 3 block nearest first (so close hits are found
+// early and prune the rest), then the outer shell of the 5 × 5 × 5 block.
+struct BlockOffsets {
+  std::array<std::array<int, 3>, 27> inner;
+  std::array<std::array<int, 3>, 98> shell;
+  BlockOffsets() {
+    int i = 0, s = 0;
+    for (int dt = -2; dt <= 2; ++dt)
+      for (int dy = -2; dy <= 2; ++dy)
+        for (int dx = -2; dx <= 2; ++dx) {
+          if (std::abs(dx) <= 1 && std::abs(dy) <= 1 && std::abs(dt) <= 1) inner[i++] = {dx, dy, dt};
+          else shell[s++] = {dx, dy, dt};
+        }
+    std::stable_sort(inner.begin(), inner.end(), [](const auto& a, const auto& b) {
+      return a[0] * a[0] + a[1] * a[1] + a[2] * a[2] < b[0] * b[0] + b[1] * b[1] + b[2] * b[2];
+    });
+  }
+};
+const BlockOffsets kBlock;
+
+}  // namespace
+
 // The nearest point of every other element near vertex v (5.5.1): exact closest points on
 // envelope triangles in the 3 × 3 × 3 block of cells around it, and for elements seen only in
-// the outer shell of the 5 × 5 × 5 block, the centre of their triangles there.
+// the outer shell of the 5 × 5 × 5 block, the centre of their triangles there. A group or
+// triangle that cannot come closer than the element's best hit so far is skipped.
 int SpacetimeSimulation::gatherHits(int v, Hit* hits) const {
   const Vec3 x = position_[v];
   const int self = sliceElement_[sliceOf_[v]];
-  const double cell = parameters_.cellSize;
-  const double reach = cell, shellReach = 2.5 * cell;
+  const double reach = parameters_.cellSize, shellReach = 2.5 * parameters_.cellSize;
   const auto [cx, cy, ct] = cellOf(x);
   int count = 0;
+  auto find = [&](int element) {
+    for (int k = 0; k < count; ++k)
+      if (hits[k].element == element) return k;
+    return -1;
+  };
   auto record = [&](int element, double d2, Vec3 point, bool exact) {
-    for (int k = 0; k < count; ++k) {
-      if (hits[k].element != element) continue;
+    if (int k = find(element); k >= 0) {
       if ((exact && !hits[k].exact) || (exact == hits[k].exact && d2 < hits[k].d2)) hits[k] = {element, d2, point, exact};
       return;
     }
@@ -241,36 +294,48 @@ int SpacetimeSimulation::gatherHits(int v, Hit* hits) const {
       if ((hits[worst].exact && !hits[k].exact) || (hits[worst].exact == hits[k].exact && hits[k].d2 > hits[worst].d2)) worst = k;
     if ((exact && !hits[worst].exact) || (exact == hits[worst].exact && d2 < hits[worst].d2)) hits[worst] = {element, d2, point, exact};
   };
-  for (int dt = -2; dt <= 2; ++dt) {
-    const int t = ct + dt;
-    if (t < 0 || t >= nt_) continue;
-    for (int dy = -2; dy <= 2; ++dy) {
-      const int y = cy + dy;
-      if (y < 0 || y >= ny_) continue;
-      for (int dx = -2; dx <= 2; ++dx) {
-        const int xx = cx + dx;
-        if (xx < 0 || xx >= nx_) continue;
-        const bool inner = std::abs(dx) <= 1 && std::abs(dy) <= 1 && std::abs(dt) <= 1;
-        const int c = (t * ny_ + y) * nx_ + xx;
-        for (int g = cellGroupStart_[c]; g < cellGroupStart_[c + 1]; ++g) {
-          const EnvelopeGroup& group = groups_[g];
-          if (group.element == self) continue;
-          const double toCentre = distance(x, group.centre);
-          if (!inner) {
-            if (toCentre < shellReach) record(group.element, toCentre * toCentre, group.centre, false);
-            continue;
-          }
-          if (toCentre - group.radius > reach) continue;
-          for (int k = group.begin; k < group.end; ++k) {
-            const int tri = cellTriangles_[k];
-            if (distance(x, envelopeCentroid_[tri]) - envelopeRadius_[tri] > reach) continue;
-            const auto& corners = envelope_[tri];
-            const Vec3 q = closestPointOnTriangle(x, position_[corners[0]], position_[corners[1]], position_[corners[2]]);
-            const double d2 = lengthSquared(q - x);
-            if (d2 <= reach * reach) record(group.element, d2, q, true);
-          }
+  auto cellIndex = [&](const std::array<int, 3>& o) {
+    const int xx = cx + o[0], y = cy + o[1], t = ct + o[2];
+    if (xx < 0 || xx >= nx_ || y < 0 || y >= ny_ || t < 0 || t >= nt_) return -1;
+    return (t * ny_ + y) * nx_ + xx;
+  };
+  for (const auto& offset : kBlock.inner) {
+    const int c = cellIndex(offset);
+    if (c < 0) continue;
+    for (int g = cellGroupStart_[c]; g < cellGroupStart_[c + 1]; ++g) {
+      const EnvelopeGroup& group = groups_[g];
+      if (group.element == self) continue;
+      const double toCentre = distance(x, group.centre);
+      const double bound = toCentre - group.radius;  // nothing in the group is nearer
+      if (bound > reach) continue;
+      const int known = find(group.element);
+      double best = known >= 0 && hits[known].exact ? hits[known].d2 : reach * reach;
+      if (bound > 0.0 && bound * bound >= best) continue;
+      for (int k = group.begin; k < group.end; ++k) {
+        const int tri = cellTriangles_[k];
+        const double triBound = distance(x, envelopeCentroid_[tri]) - envelopeRadius_[tri];
+        if (triBound > 0.0 && triBound * triBound >= best) continue;
+        const auto& corners = envelope_[tri];
+        const Vec3 q = closestPointOnTriangle(x, position_[corners[0]], position_[corners[1]], position_[corners[2]]);
+        const double d2 = lengthSquared(q - x);
+        if (d2 < best) {
+          best = d2;
+          record(group.element, d2, q, true);
         }
       }
+    }
+  }
+  for (const auto& offset : kBlock.shell) {
+    const int c = cellIndex(offset);
+    if (c < 0) continue;
+    for (int g = cellGroupStart_[c]; g < cellGroupStart_[c + 1]; ++g) {
+      const EnvelopeGroup& group = groups_[g];
+      if (group.element == self) continue;
+      const double d2 = lengthSquared(x - group.centre);
+      if (d2 >= shellReach * shellReach) continue;
+      const int known = find(group.element);
+      if (known >= 0 && hits[known].exact) continue;
+      record(group.element, d2, group.centre, false);
     }
   }
   return count;
@@ -408,18 +473,30 @@ void SpacetimeSimulation::applySliceConstraints(std::size_t elementBegin, std::s
   }
 }
 
-// 5.5.2, constraint 3: each loop's corresponding vertices meet at their mean (x, y).
+// 5.5.2, constraint 3: the last slice A of `from` and the first slice B of `to` meet. Their
+// centres move to the mean centre; each vertex's offset b from B's centre becomes the mean
+// of b and M⁻¹a (a: the same vertex's offset in A, M: the scripted turn), and A takes M b.
+// With M = identity every vertex pair moves to its mean, the thesis's rule.
 void SpacetimeSimulation::applyLoopConstraints() {
   for (const Loop& loop : loops_) {
     const ElementRecord& from = elements_[loop.from];
     const ElementRecord& to = elements_[loop.to];
-    const int last = from.vertexBegin + (slices_ - 1) * from.verticesPerSlice;
-    for (int i = 0; i < from.verticesPerSlice; ++i) {
-      Vec3& a = position_[last + i];
-      Vec3& b = position_[to.vertexBegin + loop.correspondence[i]];
-      const double mx = 0.5 * (a.x + b.x), my = 0.5 * (a.y + b.y);
-      a.x = b.x = mx;
-      a.y = b.y = my;
+    const int n = from.verticesPerSlice;
+    Vec3* a = &position_[from.vertexBegin + (slices_ - 1) * n];
+    Vec3* b = &position_[to.vertexBegin];
+    Vec2 ca, cb;
+    for (int i = 0; i < n; ++i) ca += spatial(a[i]), cb += spatial(b[i]);
+    ca = ca / static_cast<double>(n), cb = cb / static_cast<double>(n);
+    const Vec2 centre = (ca + cb) * 0.5;
+    const Vec2 m = loop.turn;
+    const double inv = 1.0 / lengthSquared(m);
+    for (int i = 0; i < n; ++i) {
+      const Vec2 ai = spatial(a[i]) - ca, bi = spatial(b[i]) - cb;
+      const Vec2 back{(m.x * ai.x + m.y * ai.y) * inv, (-m.y * ai.x + m.x * ai.y) * inv};  // M⁻¹ a
+      const Vec2 joined = (bi + back) * 0.5;
+      const Vec2 ahead{m.x * joined.x - m.y * joined.y, m.y * joined.x + m.x * joined.y};  // M b
+      b[i].x = centre.x + joined.x, b[i].y = centre.y + joined.y;
+      a[i].x = centre.x + ahead.x, a[i].y = centre.y + ahead.y;
     }
   }
 }

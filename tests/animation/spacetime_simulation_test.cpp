@@ -38,11 +38,9 @@ struct TwoTubes {
       setup.initialGrowth = 0.5;
       sim.addElement(setup);
     }
-    std::vector<int> identity(mesh.mesh.vertices.size());
-    for (std::size_t i = 0; i < identity.size(); ++i) identity[i] = static_cast<int>(i);
     if (crossLoop) {
-      sim.addLoop(0, 1, identity);
-      sim.addLoop(1, 0, identity);
+      sim.addLoop(0, 1, {1.0, 0.0});
+      sim.addLoop(1, 0, {1.0, 0.0});
     }
     sim.finalize(Box{{0, 0}, {1000, 1000}});
   }
@@ -77,6 +75,21 @@ TEST(SpacetimeSimulation, SliceConstraintsHoldAfterEveryStep) {
       EXPECT_EQ(spatial(x[tubes.sim.vertexBegin(1) + last + v]), spatial(x[tubes.sim.vertexBegin(0) + v]));
     }
   }
+}
+
+TEST(SpacetimeSimulation, LoopWithATurnJoinsTheSlicesUpToThatTurn) {
+  // Element 0's reference turns by 0.2 rad per slice: its last slice is its first turned by
+  // 1 rad, and the loop must keep exactly that relation (not squeeze the shape).
+  TwoTubes tubes(1, 4.0, false);
+  const int n = tubes.sim.verticesPerSlice(0);
+  std::vector<Vec2> first, last;
+  for (int v = 0; v < n; ++v) {
+    first.push_back(rotated(tubes.mesh.mesh.vertices[v], 0.0));
+    last.push_back(rotated(tubes.mesh.mesh.vertices[v], 0.2 * (TwoTubes::kSlices - 1)));
+  }
+  const Vec2 turn = SpacetimeSimulation::loopTurn(first.data(), last.data(), n);
+  EXPECT_NEAR(turn.x, std::cos(1.0), 1e-12);
+  EXPECT_NEAR(turn.y, std::sin(1.0), 1e-12);
 }
 
 TEST(SpacetimeSimulation, GrowsFreeSlicesAndKeepsTubesApart) {

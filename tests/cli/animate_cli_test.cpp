@@ -1,0 +1,107 @@
+// `pak animate` as a user runs it on the bundled stars example, kept small: every output
+// written and consistent with the others, determinism across thread counts, checkpoint and
+// resume, and one-line errors.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "cli/png_pixels.hpp"
+#include "io/gif_decoder.hpp"
+#include "run_pak.hpp"
+
+using namespace pak::testing;
+
+namespace {
+
+const std::string kStars =
+    "animate -c examples/animate/stars/disc.svg -a examples/animate/stars/stars.json --slices 6 --frames 8 "
+    "--width 120 --sheet-frames 3 --svg-keyframes 4 -q";
+
+TEST(CliAnimate, WritesGifAnimatedSvgFramesAndSheetThatAgree) {
+  ScratchFolder dir("cli-animate-outputs");
+  PakRun run = runPak(kStars + " --max-iterations 400 --png-frames --svg-frames -o " + shellQuoted(dir.file("out")) +
+                      " --report " + shellQuoted(dir.file("r.json")));
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  const auto report = nlohmann::json::parse(readWholeFile(dir.file("r.json")));
+  EXPECT_EQ(report["elements"], 20);
+  EXPECT_EQ(report["slices"], 6);
+  EXPECT_LE(report["iterations"].get<int>(), 400);
+  EXPECT_GT(report["vertices"].get<int>(), 20 * 6 * 8);
+  EXPECT_GT(report["art-fill-mean-over-frames"].get<double>(), 0.2);
+  EXPECT_EQ(report["frames-with-element-outside"], 0);
+
+  const std::filesystem::path out = dir.path() / "out";
+  const Gif gif = decodeGif((out / "animation.gif").string());
+  ASSERT_EQ(gif.frames.size(), 8u);
+  EXPECT_EQ(gif.loopCount, 0);
+  for (int f : {0, 3, 7}) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame-%04d.png", f);
+    const PngPixels png = readPngPixels((out / "frames" / name).string());
+    ASSERT_EQ(png.width, gif.width);
+    ASSERT_EQ(png.height, gif.height);
+    // The GIF's palette is shared by all frames, so compare colours loosely; most pixels agree.
+    int agree = 0, total = 0;
+    for (int y = 0; y < png.height; y += 7)
+      for (int x = 0; x < png.width; x += 7, ++total) {
+        const Rgba p = png.at(x, y);
+        const GifPixel g = gif.at(f, x, y);
+        agree += (std::abs(p.r - g.r) + std::abs(p.g - g.g) + std::abs(p.b - g.b) < 60) ? 1 : 0;
+      }
+    EXPECT_GT(agree, total * 9 / 10) << "frame " << f;
+    std::snprintf(name, sizeof name, "frame-%04d.svg", f);
+    EXPECT_TRUE(std::filesystem::exists(out / "svg-frames" / name)) << name;
+  }
+  const std::string animated = readWholeFile((out / "animation.svg").string());
+  EXPECT_NE(animated.find("<animate"), std::string::npos);
+  EXPECT_NE(animated.find("repeatCount=\"indefinite\""), std::string::npos);
+  EXPECT_NE(animated.find("#fbc531"), std::string::npos) << "a star's colour is kept";
+  const PngPixels sheet = readPngPixels((out / "contact-sheet.png").string());
+  EXPECT_EQ(sheet.width, 3 * 120);
+}
+
+TEST(CliAnimate, SameFramesWithOneOrTwoThreadsAndAfterResuming) {
+  ScratchFolder dir("cli-animate-determinism");
+  const std::string common = kStars + " --no-gif --svg-frames --seed 4";
+  PakRun one = runPak(common + " --max-iterations 60 --threads 1 -o " + shellQuoted(dir.file("one")));
+  PakRun two = runPak(common + " --max-iterations 60 --threads 2 -o " + shellQuoted(dir.file("two")));
+  PakRun half = runPak(common + " --max-iterations 30 --checkpoint " + shellQuoted(dir.file("ck.bin")) +
+                       " --every 30 -o " + shellQuoted(dir.file("half")));
+  ASSERT_EQ(one.exitCode, 0) << one.err;
+  ASSERT_EQ(two.exitCode, 0) << two.err;
+  ASSERT_EQ(half.exitCode, 0) << half.err;
+  PakRun resumed = runPak(common + " --max-iterations 60 --resume " + shellQuoted(dir.file("ck.bin")) + " -o " +
+                          shellQuoted(dir.file("resumed")));
+  ASSERT_EQ(resumed.exitCode, 0) << resumed.err;
+  for (const char* frame : {"frame-0000.svg", "frame-0005.svg"}) {
+    const std::string a = readWholeFile((dir.path() / "one" / "svg-frames" / frame).string());
+    EXPECT_EQ(a, readWholeFile((dir.path() / "two" / "svg-frames" / frame).string())) << frame;
+    EXPECT_EQ(a, readWholeFile((dir.path() / "resumed" / "svg-frames" / frame).string())) << frame;
+    EXPECT_NE(a, readWholeFile((dir.path() / "half" / "svg-frames" / frame).string())) << frame;
+  }
+  // A checkpoint does not fit other options.
+  PakRun other = runPak(common + " --gap 0.1 --resume " + shellQuoted(dir.file("ck.bin")) + " -o " + shellQuoted(dir.file("x")));
+  EXPECT_EQ(other.exitCode, 2);
+  EXPECT_NE(other.err.find("checkpoint"), std::string::npos) << other.err;
+}
+
+TEST(CliAnimate, BadInputIsOneLineAndExitCodeTwo) {
+  ScratchFolder dir("cli-animate-errors");
+  const std::string bad = dir.file("bad.json");
+  std::ofstream(bad) << "{\"elements\": [{\"svg\": \"nowhere.svg\", \"count\": 0}]}";
+  for (const std::string& args :
+       {std::string("animate -c examples/animate/stars/disc.svg -a missing.json -o ") + shellQuoted(dir.file("o")),
+        "animate -c examples/animate/stars/disc.svg -a " + shellQuoted(bad) + " -o " + shellQuoted(dir.file("o")),
+        kStars + " --slices 1 -o " + shellQuoted(dir.file("o")),
+        kStars + " --resume " + shellQuoted(bad) + " -o " + shellQuoted(dir.file("o"))}) {
+    PakRun run = runPak(args);
+    EXPECT_EQ(run.exitCode, 2) << args << "\n" << run.err;
+    EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+    EXPECT_EQ(run.err.rfind("pak: error: ", 0), 0u) << run.err;
+  }
+}
+
+}  // namespace
