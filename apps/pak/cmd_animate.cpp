@@ -27,9 +27,11 @@ const NumberOption<AnimationOptions> kNumberOptions[] = {
     {"mesh-spacing", &AnimationOptions::meshSpacing, "slice mesh spacing, canonical units (0: nominal element size / 4)"},
     {"initial-scale", &AnimationOptions::initialScale, "elements start shrunk to this fraction of their size (thesis 0.05–0.1)"},
     {"torsion", &AnimationOptions::torsionStrength, "k_tor for elements with a preferred orientation"},
+    {"stall-growth", &AnimationOptions::stallGrowth, "stop when the slices' mean growth rose less than this over --stall-window iterations"},
     {"closeness", &AnimationOptions::closeness, "stop when every slice is this close to a neighbour or the wall (canonical units; thesis 0.006 of the container)"},
 };
 const IntegerOption<AnimationOptions> kIntegerOptions[] = {
+    {"stall-window", &AnimationOptions::stallWindow, "iterations over which --stall-growth is measured"},
     {"slices", &AnimationOptions::slices, "n_s, slices along t (0: the animation file's, default 100)"},
     {"max-iterations", &AnimationOptions::maxIterations, "stop after this many simulation steps"},
     {"threads", &AnimationOptions::threads, "worker threads (0: all cores); the result does not depend on it"},
@@ -50,6 +52,7 @@ const NumberOption<SpacetimeParameters> kForceOptions[] = {
     {"damping", &SpacetimeParameters::damping, "fraction of velocity lost per step"},
     {"growth-rate", &SpacetimeParameters::growthRate, "a free slice grows by this × Δt per step"},
     {"max-growth", &SpacetimeParameters::maxGrowth, "growth cap (1: the nominal size)"},
+    {"growth-spread", &SpacetimeParameters::growthSpread, "a slice grows only while within this of its neighbouring slices' growth, so sizes do not pulse (0: independent slices, as in the thesis)"},
     {"cell-size", &SpacetimeParameters::cellSize, "collision grid cell and exact repulsion reach (canonical units; thesis 0.04 of the container)"},
     {"time-length", &SpacetimeParameters::timeLength, "length of the t axis in canonical units (x and y span 1000)"},
 };
@@ -133,13 +136,6 @@ int runAnimate(AnimateArguments& args) {
   const AnimatedPacking animation =
       packAnimation(scene, library, script, args.options, callbacks, args.resume.empty() ? nullptr : &resumed);
   const auto simulated = Clock::now();
-  if (std::getenv("PAK_DEBUG_GROWTH"))
-    for (const AnimatedElement& e : animation.elements) {
-      if (!e.guided) continue;
-      std::fprintf(stderr, "%s:", e.id.c_str());
-      for (std::size_t s = 0; s < e.sliceGrowth.size(); s += 3) std::fprintf(stderr, " %.2f", e.sliceGrowth[s]);
-      std::fprintf(stderr, "\n");
-    }
 
   // Frames at evenly spaced t (5.6); a loop's last frame would repeat the first.
   const int frameCount = args.frames > 0 ? args.frames : script.frames;

@@ -32,6 +32,10 @@ struct AnimationOptions {
   // Stop when every slice is within this distance of another element or the wall (5.5.3,
   // thesis 0.006 of the container), when every slice reached the growth cap, or at the cap.
   double closeness = 6.0;
+  // ... or when the slices' mean growth rose by less than stallGrowth over the last
+  // stallWindow iterations (a slice grows by growthRate × Δt = 0.001 per free iteration).
+  double stallGrowth = 0.005;
+  int stallWindow = 100;
   int maxIterations = 3000;
   std::uint64_t seed = 1;
   int threads = 0;                // 0: all cores; results do not depend on it
@@ -42,6 +46,10 @@ struct AnimationState {
   int iteration = 0;
   std::vector<Vec3> positions, velocities;
   std::vector<double> growth;
+  // The stopping rule's memory: mean growth of recent iterations (a ring indexed by
+  // iteration) and how many iterations it has seen.
+  std::vector<double> recentMeanGrowth;
+  int recorded = 0;
 };
 
 struct AnimationProgress {
@@ -59,7 +67,7 @@ struct AnimationCallbacks {
   int checkpointEvery = 0;       // 0: never
 };
 
-enum class AnimationStop { AllTouching, GrowthCap, IterationCap };
+enum class AnimationStop { AllTouching, GrowthCap, Stalled, IterationCap };
 const char* toString(AnimationStop reason);
 
 struct AnimatedElement {

@@ -33,6 +33,10 @@ struct SpacetimeParameters {
   double damping = 0.2;                 // fraction of velocity lost per step
   double growthRate = 0.01;             // a free slice's g grows by growthRate × Δt per step
   double maxGrowth = 1.5;               // g cap (reference shapes have the nominal size at g = 1)
+  // A slice grows only while its g stays within this of both neighbouring slices' g, so an
+  // element blocked at one moment does not pulse in size around it. 0: off (thesis: slices
+  // grow independently).
+  double growthSpread = 0.01;
   double cellSize = 40.0;               // collision grid cell = exact repulsion reach (5.5.1)
   double outsideTolerance = 0.5;        // a slice with a vertex further outside stops growing
   double timeLength = 1000.0;           // canonical length of the t axis
@@ -146,7 +150,7 @@ class SpacetimeSimulation {
   std::vector<std::array<int, 3>> incidentTriangle_;
   // Per global slice.
   std::vector<int> sliceElement_, sliceVertexBegin_;
-  std::vector<double> growth_, sliceTime_, restTime_;
+  std::vector<double> growth_, previousGrowth_, sliceTime_, restTime_;
   std::vector<Vec2> referenceCentre_, sliceCentre_;
   std::vector<std::uint8_t> sliceOverlapping_, sliceOutside_;
   std::vector<double> sliceGap_, sliceArea_;

@@ -20,6 +20,7 @@ const char* toString(AnimationStop reason) {
   switch (reason) {
     case AnimationStop::AllTouching: return "all-slices-touching";
     case AnimationStop::GrowthCap: return "growth-cap";
+    case AnimationStop::Stalled: return "stalled";
     case AnimationStop::IterationCap: return "iteration-cap";
   }
   return "?";
@@ -62,6 +63,8 @@ void checkOptions(const AnimationOptions& o, int slices) {
   if (!(o.initialScale > 0.0 && o.initialScale <= 1.0)) throw InputError("", "initial scale must be in (0, 1]");
   positive(o.closeness, "closeness");
   if (o.maxIterations < 0) throw InputError("", "max iterations must not be negative");
+  if (o.stallWindow < 1) throw InputError("", "stall window must be at least 1");
+  if (!(o.stallGrowth >= 0.0) || !std::isfinite(o.stallGrowth)) throw InputError("", "stall growth must not be negative");
   const SpacetimeParameters& p = o.simulation;
   positive(p.timeStep, "time step");
   positive(p.velocityCap, "velocity cap");
@@ -338,21 +341,41 @@ AnimatedPacking packAnimation(const Scene& scene, const Library& library, const 
     p.minGrowth = sim.minGrowth();
     return p;
   };
+  std::vector<double> meanGrowth(options.stallWindow + 1, 0.0);
+  int recorded = 0;
+  if (resumeFrom && !resumeFrom->recentMeanGrowth.empty()) {
+    if (resumeFrom->recentMeanGrowth.size() != meanGrowth.size())
+      throw InputError("", "the checkpoint was made with another stall window");
+    meanGrowth = resumeFrom->recentMeanGrowth;
+    recorded = resumeFrom->recorded;
+  }
   auto state = [&] {
-    return AnimationState{sim.iteration(), sim.positions(), sim.velocities(), sim.growth()};
+    return AnimationState{sim.iteration(), sim.positions(), sim.velocities(), sim.growth(), meanGrowth, recorded};
   };
   result.stopReason = AnimationStop::IterationCap;
+  // Mean growth of the last stallWindow + 1 iterations, by iteration number; checkpoints keep
+  // it, so a resumed run stops where the uninterrupted one does.
   while (sim.iteration() < options.maxIterations) {
     sim.step();
     const int it = sim.iteration();
-    if (callbacks.onProgress && callbacks.progressEvery > 0 && it % callbacks.progressEvery == 0) callbacks.onProgress(progress());
+    double mean = 0.0;
+    for (double g : sim.growth()) mean += g;
+    mean /= static_cast<double>(sim.growth().size());
+    meanGrowth[it % meanGrowth.size()] = mean;
+    ++recorded;
     if (callbacks.onCheckpoint && callbacks.checkpointEvery > 0 && it % callbacks.checkpointEvery == 0) callbacks.onCheckpoint(state());
+    if (callbacks.onProgress && callbacks.progressEvery > 0 && it % callbacks.progressEvery == 0) callbacks.onProgress(progress());
     if (sim.largestSliceGap() < options.closeness) {
       result.stopReason = AnimationStop::AllTouching;
       break;
     }
     if (sim.minGrowth() >= options.simulation.maxGrowth) {
       result.stopReason = AnimationStop::GrowthCap;
+      break;
+    }
+    if (recorded > options.stallWindow &&
+        mean - meanGrowth[(it - options.stallWindow) % meanGrowth.size()] < options.stallGrowth) {
+      result.stopReason = AnimationStop::Stalled;
       break;
     }
   }

@@ -158,6 +158,7 @@ void SpacetimeSimulation::finalize(const Box& area) {
   sliceOutside_.assign(ns, 0);
   sliceGap_.assign(ns, kFar);
   sliceArea_.assign(ns, 0.0);
+  previousGrowth_.assign(ns, 0.0);
 
   // Collision grid over the container's box (grown by a cell) × [0, timeLength].
   const double cell = parameters_.cellSize;
@@ -525,8 +526,15 @@ void SpacetimeSimulation::updateSlices(std::size_t begin, std::size_t end) {
     sliceOverlapping_[s] = overlapping ? 1 : 0;
     sliceOutside_[s] = outside ? 1 : 0;
     sliceGap_[s] = gap;
-    if (!overlapping && !outside && growth_[s] < parameters_.maxGrowth)
-      growth_[s] = std::min(parameters_.maxGrowth, growth_[s] + parameters_.growthRate * parameters_.timeStep);
+    const double grown = std::min(parameters_.maxGrowth, growth_[s] + parameters_.growthRate * parameters_.timeStep);
+    bool smooth = true;
+    if (parameters_.growthSpread > 0.0) {  // neighbours in t as they were before this step
+      const int first = element.sliceBegin, last = first + slices_ - 1;
+      const int k = static_cast<int>(s);
+      if (k > first) smooth = smooth && grown <= previousGrowth_[k - 1] + parameters_.growthSpread;
+      if (k < last) smooth = smooth && grown <= previousGrowth_[k + 1] + parameters_.growthSpread;
+    }
+    if (!overlapping && !outside && smooth) growth_[s] = grown;
   }
 }
 
@@ -538,6 +546,7 @@ void SpacetimeSimulation::step() {
   pool_.parallelFor(nv, 4096, [&](std::size_t b, std::size_t e) { integrate(b, e); });
   pool_.parallelFor(elements_.size(), 1, [&](std::size_t b, std::size_t e) { applySliceConstraints(b, e); });
   applyLoopConstraints();
+  std::copy(growth_.begin(), growth_.end(), previousGrowth_.begin());
   pool_.parallelFor(ns, 256, [&](std::size_t b, std::size_t e) { updateSlices(b, e); });
 
   // Reductions in a fixed order, so they do not depend on the thread count.

@@ -11,7 +11,7 @@ namespace pak {
 
 namespace {
 
-constexpr char kMagic[8] = {'P', 'A', 'K', 'A', 'N', 'I', 'M', '1'};
+constexpr char kMagic[8] = {'P', 'A', 'K', 'A', 'N', 'I', 'M', '2'};
 
 template <class T>
 void put(std::string& out, const T& value) {
@@ -54,6 +54,9 @@ void writeAnimationCheckpoint(const AnimationState& state, std::uint64_t fingerp
   for (const Vec3& p : state.positions) put(out, p.x), put(out, p.y), put(out, p.t);
   for (const Vec3& v : state.velocities) put(out, v.x), put(out, v.y), put(out, v.t);
   for (double g : state.growth) put(out, g);
+  put(out, static_cast<std::uint64_t>(state.recentMeanGrowth.size()));
+  for (double g : state.recentMeanGrowth) put(out, g);
+  put(out, static_cast<std::int64_t>(state.recorded));
   writeFileAtomically(path, out);
 }
 
@@ -83,6 +86,12 @@ AnimationState readAnimationCheckpoint(const std::string& path, std::uint64_t fi
   for (std::uint64_t k = 0; k < vertices; ++k) state.velocities.push_back(vec());
   state.growth.reserve(slices);
   for (std::uint64_t k = 0; k < slices; ++k) state.growth.push_back(in.get<double>());
+  const std::uint64_t window = in.get<std::uint64_t>();
+  if (window > bytes.size() / 8) throw InputError(path, "checkpoint is damaged");
+  for (std::uint64_t k = 0; k < window; ++k) state.recentMeanGrowth.push_back(in.get<double>());
+  const std::int64_t recorded = in.get<std::int64_t>();
+  if (recorded < 0) throw InputError(path, "checkpoint is damaged");
+  state.recorded = static_cast<int>(recorded);
   if (!in.atEnd()) throw InputError(path, "checkpoint has trailing bytes");
   return state;
 }
