@@ -10,7 +10,7 @@ namespace pak::forces {
 
 // Eq. 4.2, one neighbour: pushes x away from x_i, the closest point on the neighbour's skin.
 // `soft` (ς) bounds the magnitude at k/ς when the points meet.
-template <class V>
+template <class V = Vec2>  // Vec2 when called with braced points
 inline V repulsion(V x, V closestOnNeighbour, double k, double soft) {
   V u = x - closestOnNeighbour;
   double d2 = lengthSquared(u);
@@ -20,7 +20,7 @@ inline V repulsion(V x, V closestOnNeighbour, double k, double soft) {
 
 // Eq. 4.3: quadratic spring on vertex a (apply the negation to b). Pulls a toward b when
 // stretched, pushes it away when compressed; magnitude k (|u| - rest)².
-template <class V>
+template <class V = Vec2>  // Vec2 when called with braced points
 inline V edge(V a, V b, double restLength, double k) {
   V u = b - a;
   double len = length(u);
@@ -31,11 +31,11 @@ inline V edge(V a, V b, double restLength, double k) {
 }
 
 // Eq. 4.4, one incident triangle: pulls an intruding vertex toward the triangle's centroid.
-template <class V>
+template <class V = Vec2>  // Vec2 when called with braced points
 inline V overlap(V x, V triangleCentroid, double k) { return (triangleCentroid - x) * k; }
 
 // Eq. 4.5: pulls a vertex outside the container toward the closest boundary point.
-template <class V>
+template <class V = Vec2>  // Vec2 when called with braced points
 inline V boundary(V x, V closestOnBoundary, double k) { return (closestOnBoundary - x) * k; }
 
 // Eq. 4.6: turns x about the element's current centre c back toward its rest direction

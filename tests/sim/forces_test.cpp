@@ -55,3 +55,20 @@ TEST(Forces, TorsionTurnsBackTowardRestDirection) {
   // Aligned: no force.
   EXPECT_EQ(length(forces::torsion({3, 0}, {0, 0}, {1, 0}, 1.0)), 0.0);
 }
+
+namespace pak {
+namespace {
+
+// The same laws in (x, y, t): a spacetime pair at distance 5 repels as a planar one does.
+TEST(Forces, SpacetimeRepulsionAndSpringsMatchThePlane) {
+  const Vec3 f = forces::repulsion(Vec3{3, 0, 4}, Vec3{0, 0, 0}, 80.0, 1.0);
+  const Vec2 g = forces::repulsion(Vec2{3, 4}, Vec2{0, 0}, 80.0, 1.0);
+  EXPECT_NEAR(length(f), length(g), 1e-12);
+  EXPECT_NEAR(f.t / f.x, 4.0 / 3.0, 1e-12);
+  const Vec3 e = forces::edge(Vec3{0, 0, 0}, Vec3{0, 0, 12}, 10.0, 40.0);
+  EXPECT_NEAR(e.t, 40.0 * 4.0, 1e-9);  // stretched by 2: k·2² toward the other end
+  EXPECT_EQ(e.x, 0.0);
+}
+
+}  // namespace
+}  // namespace pak
