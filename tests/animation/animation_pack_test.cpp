@@ -106,6 +106,36 @@ TEST(AnimationPack, GuidedElementFollowsItsTargets) {
   EXPECT_GT(distance(centreAt(0.5), centreAt(0.0)), 120.0);
 }
 
+TEST(AnimationPack, TwoGuidedElementsSwapPlacesInAPermutationLoop) {
+  // Thesis Fig. 5.11d: A runs from left to right, B from right to left; A's t = 1 slice joins
+  // B's t = 0 slice and the other way round.
+  AnimationScript script = test::spinningStars(2);
+  AnimatedElementSpec a, b;
+  a.id = "a", b.id = "b";
+  a.svg = b.svg = "star.svg";
+  a.targets = {{0.0, {150, 250}, {}, {}}, {1.0, {350, 250}, {}, {}}};
+  b.targets = {{0.0, {350, 250}, {}, {}}, {1.0, {150, 250}, {}, {}}};
+  a.loopTo = "b", b.loopTo = "a";
+  script.elements.push_back(a);
+  script.elements.push_back(b);
+  const ElementArt star = test::starElement("star.svg");
+  const AnimatedPacking result = packAnimation(test::discScene(), {star, star, star}, script, test::quickAnimationOptions());
+  const AnimatedElement *ea = nullptr, *eb = nullptr;
+  for (const AnimatedElement& e : result.elements) {
+    if (e.id == "a") ea = &e;
+    if (e.id == "b") eb = &e;
+  }
+  ASSERT_TRUE(ea && eb);
+  auto centre = [](const std::vector<Vec2>& slice) {
+    Vec2 c;
+    for (Vec2 p : slice) c += p;
+    return c / static_cast<double>(slice.size());
+  };
+  EXPECT_LT(distance(centre(ea->slices.back()), centre(eb->slices.front())), 1e-9);
+  EXPECT_LT(distance(centre(eb->slices.back()), centre(ea->slices.front())), 1e-9);
+  EXPECT_GT(distance(centre(ea->slices.front()), centre(eb->slices.front())), 120.0);
+}
+
 TEST(AnimationPack, BadInputIsAnInputError) {
   AnimationScript script = test::spinningStars(2);
   EXPECT_THROW(packAnimation(test::discScene(), {}, script), InputError);  // no art for the element
