@@ -14,6 +14,7 @@
 #include "pak/atomic_file.hpp"
 #include "pak/error.hpp"
 #include "pak/packing_drawing.hpp"
+#include "pak/png_renderer.hpp"
 #include "pak/scene_loader.hpp"
 #include "pak/text_file.hpp"
 #include "pak/verify.hpp"
@@ -59,7 +60,7 @@ const NumberOption<SpacetimeParameters> kForceOptions[] = {
 const OptionTable<SpacetimeParameters> kForceTable{kForceOptions, {}};
 
 struct AnimateArguments {
-  std::string container, animation, output, config, report, checkpoint, resume, video;
+  std::string container, animation, output, config, report, checkpoint, resume, video, png;
   int frames = 0, width = 480, every = 100, sheetFrames = 5, svgKeyframes = 60;
   bool quiet = false, pngFrames = false, svgFrames = false, noGif = false;
   std::uint64_t seed = 1;
@@ -155,6 +156,11 @@ int runAnimate(AnimateArguments& args) {
   if (args.pngFrames) writePngFrames(frames, (out / "frames").string(), output);
   if (args.svgFrames) writeSvgFrames(frames, (out / "svg-frames").string(), output);
   if (!args.video.empty()) writeVideo(frames, args.video, output);
+  if (!args.png.empty()) {
+    PngOptions png;
+    png.width = args.width;
+    writePngFile(frames.front(), args.png, png);
+  }
   {
     const int keys = std::min(args.svgKeyframes, frameCount);
     std::vector<Drawing> keyframes;
@@ -269,6 +275,7 @@ const CommandRegistrar registrar{{"animate", [](CLI::App& app) {
   cmd->add_flag("--png-frames", args->pngFrames, "also write OUT/frames/frame-NNNN.png");
   cmd->add_flag("--svg-frames", args->svgFrames, "also write OUT/svg-frames/frame-NNNN.svg");
   cmd->add_flag("--no-gif", args->noGif, "skip the GIF");
+  cmd->add_option("--png", args->png, "also write the first frame (t = 0) as a PNG preview to this file");
   cmd->add_option("--video", args->video, "also write a video, FILE.mp4 or FILE.webm (needs the ffmpeg program)");
   cmd->add_option("--sheet-frames", args->sheetFrames, "frames on the contact sheet, evenly spaced in t")->capture_default_str();
   cmd->add_option("--svg-keyframes", args->svgKeyframes, "frames stored in the animated SVG (the browser interpolates between them)")->capture_default_str();

@@ -307,9 +307,14 @@ AnimatedPacking packAnimation(const Scene& scene, const Library& library, const 
     for (std::size_t e = 0; e < instances.size(); ++e) {
       const ElementType& type = types[instances[e].type];
       int to = static_cast<int>(e);
-      if (!type.spec->loopTo.empty())
+      if (!type.spec->loopTo.empty()) {
+        bool found = false;
         for (std::size_t i = 0; i < types.size(); ++i)
-          if (types[i].spec->id == type.spec->loopTo) to = guidedInstance[i] >= 0 ? guidedInstance[i] : to;
+          if (types[i].spec->id == type.spec->loopTo && guidedInstance[i] >= 0) to = guidedInstance[i], found = true;
+        if (!found)
+          throw InputError("", "element '" + type.spec->id + "' loops to '" + type.spec->loopTo +
+                                   "', which is not a guided element; loop_to joins guided elements");
+      }
       const ElementType& toType = types[instances[to].type];
       if (toType.meshIndex != type.meshIndex)
         throw InputError("", "element '" + type.spec->id + "' loops to '" + toType.spec->id +

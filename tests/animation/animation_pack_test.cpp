@@ -144,6 +144,14 @@ TEST(AnimationPack, BadInputIsAnInputError) {
   EXPECT_THROW(packAnimation(test::discScene(), {test::starElement("s")}, script, bad), InputError);
   script.elements[0].animation.handles = {{"tail", {{0.0, {0, 0}}, {1.0, {5, 0}}}}};
   EXPECT_THROW(packAnimation(test::discScene(), {test::starElement("s")}, script), InputError);  // no such handle
+  AnimationScript unguidedLoop = test::spinningStars(2);
+  AnimatedElementSpec runner;
+  runner.id = "runner";
+  runner.svg = "star.svg";
+  runner.targets = {{0.0, {150, 250}, {}, {}}, {1.0, {150, 250}, {}, {}}};
+  runner.loopTo = "star";  // an unguided element
+  unguidedLoop.elements.push_back(runner);
+  EXPECT_THROW(packAnimation(test::discScene(), {test::starElement("s"), test::starElement("s")}, unguidedLoop), InputError);
   Scene empty;
   EXPECT_THROW(packAnimation(empty, {test::starElement("s")}, test::spinningStars(2)), InputError);
 }

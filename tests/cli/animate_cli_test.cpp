@@ -22,7 +22,8 @@ const std::string kStars =
 
 TEST(CliAnimate, WritesGifAnimatedSvgFramesAndSheetThatAgree) {
   ScratchFolder dir("cli-animate-outputs");
-  PakRun run = runPak(kStars + " --max-iterations 400 --png-frames --svg-frames -o " + shellQuoted(dir.file("out")) +
+  PakRun run = runPak(kStars + " --max-iterations 400 --png-frames --svg-frames --png " + shellQuoted(dir.file("first.png")) +
+                      " -o " + shellQuoted(dir.file("out")) +
                       " --report " + shellQuoted(dir.file("r.json")));
   ASSERT_EQ(run.exitCode, 0) << run.err;
   const auto report = nlohmann::json::parse(readWholeFile(dir.file("r.json")));
@@ -59,6 +60,12 @@ TEST(CliAnimate, WritesGifAnimatedSvgFramesAndSheetThatAgree) {
   EXPECT_NE(animated.find("<animate"), std::string::npos);
   EXPECT_NE(animated.find("repeatCount=\"indefinite\""), std::string::npos);
   EXPECT_NE(animated.find("#fbc531"), std::string::npos) << "a star's colour is kept";
+  const PngPixels first = readPngPixels(dir.file("first.png")), frame0 = readPngPixels((out / "frames" / "frame-0000.png").string());
+  ASSERT_EQ(first.width, frame0.width);
+  ASSERT_EQ(first.height, frame0.height);
+  EXPECT_EQ(first.width, 120);
+  for (int y = 0; y < first.height; y += 11)
+    for (int x = 0; x < first.width; x += 11) ASSERT_TRUE(near(first.at(x, y), frame0.at(x, y).r, frame0.at(x, y).g, frame0.at(x, y).b, 0));
   const PngPixels sheet = readPngPixels((out / "contact-sheet.png").string());
   EXPECT_EQ(sheet.width, 3 * 120);
 }
