@@ -191,7 +191,7 @@ const CommandRegistrar registrar{{"flow", [](CLI::App& app) {
       "The scene's `guides` strokes set a vector field; evenly spaced streamlines each receive the\n"
       "element whose shape best fits the space around them, bent along the streamline; then\n"
       "streamlines shift and blobs grow for --iterations rounds to even out the negative space.\n"
-      "Example: pak flow examples/flow/fish.svg --elements examples/flow/leaves -o out.svg --png out.png");
+      "Example: pak flow examples/flow/koi.svg --elements examples/flow/elements -o out.svg --png out.png");
   args->command = cmd;
   cmd->add_option("scene", args->scene,
                   "scene SVG: layers `container` (closed regions), `guides` (direction strokes; every container needs "
