@@ -35,7 +35,7 @@ bool sameMarkup(const std::optional<RawMarkup>& a, const std::optional<RawMarkup
 // SMIL can interpolate between them.
 bool sameShapeStructure(const Shape& a, const Shape& b) {
   if (a.subpaths.size() != b.subpaths.size() || a.fill != b.fill || a.stroke != b.stroke ||
-      a.strokeWidth != b.strokeWidth || a.opacity != b.opacity || a.fillRule != b.fillRule || a.id != b.id)
+      a.opacity != b.opacity || a.fillRule != b.fillRule || a.id != b.id)
     return false;
   for (std::size_t i = 0; i < a.subpaths.size(); ++i)
     if (a.subpaths[i].points.size() != b.subpaths[i].points.size() || a.subpaths[i].closed != b.subpaths[i].closed)
@@ -122,12 +122,27 @@ std::string morphingSvg(const std::vector<Drawing>& frames, const AnimationOutpu
       values += ';';
       values += dk;
     }
-    if (!moves) return {};  // a still shape needs no animation
-    if (options.loop) values += ';' + d;
-    std::string text(static_cast<std::size_t>(depth) * 2, ' ');
-    text += "<animate attributeName=\"d\"" + repeat + " calcMode=\"linear\" keyTimes=\"" + keyTimes +
-            "\" values=\"" + values + "\"/>\n";
-    return text;
+    // A stroke keeps its width relative to a growing or shrinking shape: animate it too.
+    std::string widths = formatNumber(shape.strokeWidth, builder.precision());
+    bool widthChanges = false;
+    for (std::size_t k = 1; k < n; ++k) {
+      const std::string wk = formatNumber(shapes[k][index]->strokeWidth, builder.precision());
+      widthChanges = widthChanges || wk != formatNumber(shape.strokeWidth, builder.precision());
+      widths += ';' + wk;
+    }
+    std::string text;
+    const std::string indent(static_cast<std::size_t>(depth) * 2, ' ');
+    if (moves) {
+      if (options.loop) values += ';' + d;
+      text += indent + "<animate attributeName=\"d\"" + repeat + " calcMode=\"linear\" keyTimes=\"" + keyTimes +
+              "\" values=\"" + values + "\"/>\n";
+    }
+    if (widthChanges && shape.stroke) {
+      if (options.loop) widths += ';' + formatNumber(shape.strokeWidth, builder.precision());
+      text += indent + "<animate attributeName=\"stroke-width\"" + repeat + " calcMode=\"linear\" keyTimes=\"" +
+              keyTimes + "\" values=\"" + widths + "\"/>\n";
+    }
+    return text;  // empty for a still shape
   };
   builder.beginDocument({&frames.front()});
   for (const DrawingGroup& group : frames.front().groups) builder.writeGroup(group, 1);

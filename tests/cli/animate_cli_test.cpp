@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <nlohmann/json.hpp>
 
 #include "cli/png_pixels.hpp"
@@ -15,6 +16,22 @@
 using namespace pak::testing;
 
 namespace {
+
+std::vector<double> numbersIn(const std::string& text) {
+  std::vector<double> numbers;
+  static const std::regex number(R"(-?[0-9]+(\.[0-9]+)?(e-?[0-9]+)?)");
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), number); it != std::sregex_iterator(); ++it)
+    numbers.push_back(std::stod(it->str()));
+  return numbers;
+}
+
+// The `d` of the index-th <path> of an SVG file.
+std::string pathData(const std::string& svg, std::size_t index) {
+  std::size_t at = 0;
+  for (std::size_t k = 0; k <= index; ++k) at = svg.find("<path", at + 1);
+  const std::size_t begin = svg.find(" d=\"", at) + 4;
+  return svg.substr(begin, svg.find('"', begin) - begin);
+}
 
 const std::string kStars =
     "animate -c examples/animate/stars/disc.svg -a examples/animate/stars/stars.json --slices 6 --frames 8 "
@@ -57,7 +74,28 @@ TEST(CliAnimate, WritesGifAnimatedSvgFramesAndSheetThatAgree) {
     EXPECT_TRUE(std::filesystem::exists(out / "svg-frames" / name)) << name;
   }
   const std::string animated = readWholeFile((out / "animation.svg").string());
-  EXPECT_NE(animated.find("<animate"), std::string::npos);
+  // One path per shape whose `d` runs through the keyframes: keyframe i (t = i/4) is frame 2i.
+  const std::size_t animate = animated.find("<animate attributeName=\"d\"");
+  ASSERT_NE(animate, std::string::npos);
+  std::size_t pathIndex = 0;
+  for (std::size_t at = animated.find("<path"); at < animate; at = animated.find("<path", at + 1)) ++pathIndex;
+  --pathIndex;
+  const std::size_t valuesAt = animated.find("values=\"", animate) + 8;
+  std::string values = animated.substr(valuesAt, animated.find('"', valuesAt) - valuesAt);
+  std::vector<std::string> keyframes;
+  for (std::size_t from = 0, to; (to = values.find(';', from)) != std::string::npos || from < values.size(); from = to + 1) {
+    if (to == std::string::npos) to = values.size();
+    keyframes.push_back(values.substr(from, to - from));
+  }
+  ASSERT_EQ(keyframes.size(), 5u);  // four keyframes and the first again, closing the loop
+  for (int i = 0; i < 4; ++i) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame-%04d.svg", 2 * i);
+    const std::vector<double> frame = numbersIn(pathData(readWholeFile((out / "svg-frames" / name).string()), pathIndex));
+    const std::vector<double> key = numbersIn(keyframes[i]);
+    ASSERT_EQ(frame.size(), key.size()) << name;
+    for (std::size_t k = 0; k < key.size(); ++k) ASSERT_NEAR(frame[k], key[k], 0.02) << name;
+  }
   EXPECT_NE(animated.find("repeatCount=\"indefinite\""), std::string::npos);
   EXPECT_NE(animated.find("#fbc531"), std::string::npos) << "a star's colour is kept";
   const PngPixels first = readPngPixels(dir.file("first.png")), frame0 = readPngPixels((out / "frames" / "frame-0000.png").string());
