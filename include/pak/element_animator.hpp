@@ -24,17 +24,13 @@ class ElementAnimator {
   // The mesh's vertex positions at time t ∈ [0, 1]. The y axis points down (SVG), so a
   // positive rotation turns counter-clockwise on screen.
   void shapeAt(double t, std::vector<Vec2>& out) const;
-  bool animated() const { return animated_; }
 
  private:
   std::vector<Vec2> rest_;
   ElementAnimation animation_;  // translation converted to mesh units
   std::vector<Vec2> handleRest_;  // mesh units, one per animation handle track
-  std::vector<int> handleVertex_;
   std::optional<ArapDeformation> arap_;
-  double fileScale_ = 1.0;
   bool periodic_ = false;
-  bool animated_ = false;
 };
 
 }  // namespace pak

@@ -89,7 +89,6 @@ class SpacetimeSimulation {
   int elementCount() const { return static_cast<int>(elements_.size()); }
   int vertexBegin(int element) const { return elements_[element].vertexBegin; }
   int verticesPerSlice(int element) const { return elements_[element].verticesPerSlice; }
-  const ElementMesh& mesh(int element) const { return *elements_[element].mesh; }
   std::size_t vertexCount() const { return position_.size(); }
   std::size_t springCount() const { return springOther_.size() / 2; }
   std::size_t envelopeTriangleCount() const { return envelope_.size(); }

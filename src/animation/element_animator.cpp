@@ -10,9 +10,8 @@ namespace pak {
 
 ElementAnimator::ElementAnimator(const TriMesh& mesh, const std::vector<ElementHandle>& handles,
                                  const ElementAnimation& animation, Vec2 fileOrigin, double fileScale, bool periodic)
-    : rest_(mesh.vertices), animation_(animation), fileScale_(fileScale), periodic_(periodic) {
+    : rest_(mesh.vertices), animation_(animation), periodic_(periodic) {
   for (PointKey& key : animation_.translation) key.value = key.value * fileScale;
-  animated_ = !animation_.rotation.empty() || !animation_.scale.empty() || !animation_.translation.empty();
 
   // Each moving handle drives the mesh vertex nearest to it. Handles the script does not
   // move stay where they are (pinned), so a single moving handle bends the shape instead of
@@ -33,7 +32,6 @@ ElementAnimator::ElementAnimator(const TriMesh& mesh, const std::vector<ElementH
     return best;
   };
   if (animation_.handles.empty()) return;
-  animated_ = true;
   std::vector<int> vertices;
   for (const ElementAnimation::HandleTrack& track : animation_.handles) {
     for (const ElementHandle& h : handles)
@@ -57,7 +55,6 @@ ElementAnimator::ElementAnimator(const TriMesh& mesh, const std::vector<ElementH
     vertices.push_back(v);
     handleRest_.push_back(rest_[v]);
   }
-  handleVertex_ = vertices;
   arap_.emplace(mesh, vertices);
 }
 
