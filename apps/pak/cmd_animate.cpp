@@ -149,9 +149,15 @@ int runAnimate(AnimateArguments& args) {
   output.loop = script.loop;
   output.width = args.width;
 
+  // Each frame's packing once: it is drawn, and checked below.
+  std::vector<Packing> packings;
   std::vector<Drawing> frames;
+  packings.reserve(frameCount);
   frames.reserve(frameCount);
-  for (int i = 0; i < frameCount; ++i) frames.push_back(drawingAt(frameTime(i, frameCount)));
+  for (int i = 0; i < frameCount; ++i) {
+    packings.push_back(animationFrame(animation, frameTime(i, frameCount)));
+    frames.push_back(packingDrawing(scene, packings.back()));
+  }
   if (!args.noGif) writeGif(frames, (out / "animation.gif").string(), output);
   if (args.pngFrames) writePngFrames(frames, (out / "frames").string(), output);
   if (args.svgFrames) writeSvgFrames(frames, (out / "svg-frames").string(), output);
@@ -188,15 +194,9 @@ int runAnimate(AnimateArguments& args) {
   checkOptions.areaTolerance = 1e-6 * containerArea;
   int framesWithOverlap = 0, framesOutside = 0, worstPairs = 0;
   double worstOverlapArea = 0.0, meanFill = 0.0;
-  for (int i = 0; i < frameCount; ++i) {
-    const Packing frame = animationFrame(animation, frameTime(i, frameCount));
-    std::vector<Region> outlines;
-    for (const PlacedElement& e : frame.elements) {
-      Region art;
-      for (const Shape& s : e.art) art = unite(art, paintedRegion(s));
-      meanFill += area(art) / containerArea / frameCount;
-      outlines.push_back(std::move(art));
-    }
+  for (const Packing& frame : packings) {
+    const std::vector<Region> outlines = artOutlines(frame);
+    for (const Region& r : outlines) meanFill += area(r) / containerArea / frameCount;
     const PackingCheck check = verifyPacking(outlines, animation.container, checkOptions);
     framesWithOverlap += check.overlappingPairs > 0 ? 1 : 0;
     framesOutside += check.elementsOutside > 0 ? 1 : 0;

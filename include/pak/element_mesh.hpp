@@ -7,6 +7,7 @@
 
 #include "pak/art.hpp"
 #include "pak/polygon.hpp"
+#include "pak/scene.hpp"
 #include "pak/tri_mesh.hpp"
 
 namespace pak {
@@ -50,6 +51,11 @@ struct ElementMesh {
 // Throws InputError if the outline is empty.
 ElementMesh buildElementMesh(const std::vector<Shape>& art, const Region& outline,
                              const ElementMeshOptions& options);
+
+// One common scale for a library that keeps its elements' relative sizes and makes their
+// mean skin area (art offset by gap/2) `nominalSkinArea`: estimated from the art areas, then
+// corrected once with real skins. Throws InputError for an element that paints no area.
+double librarySkinScale(const Library& library, double nominalSkinArea, double gap);
 
 // The skin of an outline: offset by gap/2, holes filled, pieces merged into one polygon.
 Polygon elementSkin(const Region& outline, double gap, double arcTolerance);

@@ -138,21 +138,7 @@ AnimatedPacking packAnimation(const Scene& scene, const Library& library, const 
   const double gap = options.gap * nominalSize;
   const double spacing = options.meshSpacing > 0.0 ? options.meshSpacing : nominalSize / 4.0;
 
-  // One common scale keeps the library's relative sizes; the mean skin area is the nominal one.
-  double meanArt = 0.0;
-  for (const ElementArt& e : library) {
-    const double a = area(e.outline);
-    if (!(a > 0.0)) throw InputError(e.source, "element paints no area");
-    meanArt += a / library.size();
-  }
-  double scale = std::sqrt(0.75 * nominalArea / meanArt);
-  {
-    double meanSkin = 0.0;
-    for (const ElementArt& e : library)
-      meanSkin += area(Region{elementSkin(transformed(e.outline, scale, -centroid(e.outline) * scale), gap, 0.5)}) /
-                  library.size();
-    if (meanSkin > 0.0) scale *= std::sqrt(nominalArea / meanSkin);
-  }
+  const double scale = librarySkinScale(library, nominalArea, gap);
 
   // Meshes, one per SVG file (so loops may join copies of different script entries).
   std::vector<SharedMesh> meshes;

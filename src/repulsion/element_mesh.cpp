@@ -184,6 +184,22 @@ ElementMesh buildElementMesh(const std::vector<Shape>& art, const Region& outlin
   return result;
 }
 
+double librarySkinScale(const Library& library, double nominalSkinArea, double gap) {
+  double meanArt = 0.0;
+  for (const ElementArt& e : library) {
+    const double a = area(e.outline);
+    if (!(a > 0.0)) throw InputError(e.source, "element paints no area");
+    meanArt += a / library.size();
+  }
+  double scale = std::sqrt(0.75 * nominalSkinArea / meanArt);
+  double meanSkin = 0.0;
+  for (const ElementArt& e : library)
+    meanSkin += area(Region{elementSkin(transformed(e.outline, scale, -centroid(e.outline) * scale), gap, 0.5)}) /
+                library.size();
+  if (meanSkin > 0.0) scale *= std::sqrt(nominalSkinArea / meanSkin);
+  return scale;
+}
+
 void replayArt(const ElementMesh& mesh, const Vec2* deformed, std::vector<Vec2>& artPoints) {
   artPoints.resize(mesh.bindings.size());
   for (std::size_t i = 0; i < mesh.bindings.size(); ++i) {

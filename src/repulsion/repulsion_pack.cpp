@@ -88,20 +88,7 @@ std::vector<Shape> transformedArt(const std::vector<Shape>& art, Vec2 centre, do
 
 std::vector<PreparedElement> prepareLibrary(const Library& library, double nominalSkinArea, double spacing,
                                             const RepulsionOptions& options) {
-  // One common scale keeps the library's relative sizes: chosen so that the mean skin area
-  // is the nominal one (first from art areas, then corrected once with real skins).
-  double meanArt = 0.0;
-  for (const ElementArt& e : library) {
-    double a = area(e.outline);
-    if (!(a > 0.0)) throw InputError(e.source, "element paints no area");
-    meanArt += a / library.size();
-  }
-  double scale = std::sqrt(0.75 * nominalSkinArea / meanArt);
-  double meanSkin = 0.0;
-  for (const ElementArt& e : library)
-    meanSkin += area(Region{elementSkin(transformed(e.outline, scale, -centroid(e.outline) * scale), options.gap, 0.5)}) /
-                library.size();
-  if (meanSkin > 0.0) scale *= std::sqrt(nominalSkinArea / meanSkin);
+  const double scale = librarySkinScale(library, nominalSkinArea, options.gap);
 
   ElementMeshOptions meshOptions;
   meshOptions.gap = options.gap;
