@@ -8,8 +8,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "pak/lr_function.hpp"
-#include "pak/skeletal_stroke.hpp"
+#include "pak/flow/lr_function.hpp"
+#include "pak/flow/skeletal_stroke.hpp"
 
 namespace {
 

@@ -7,9 +7,9 @@
 #include <cmath>
 #include <filesystem>
 
-#include "pak/element_mesh.hpp"
-#include "pak/scene_loader.hpp"
-#include "pak/shape_matching.hpp"
+#include "pak/io/scene_loader.hpp"
+#include "pak/repulsion/shape_matching.hpp"
+#include "pak/sim/element_mesh.hpp"
 
 namespace {
 

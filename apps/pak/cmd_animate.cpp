@@ -7,17 +7,17 @@
 
 #include "command.hpp"
 #include "option_table.hpp"
-#include "pak/animation.hpp"
-#include "pak/animation_checkpoint.hpp"
-#include "pak/animation_output.hpp"
-#include "pak/animation_script_reader.hpp"
-#include "pak/atomic_file.hpp"
+#include "pak/animation/animation.hpp"
 #include "pak/error.hpp"
-#include "pak/packing_drawing.hpp"
-#include "pak/png_renderer.hpp"
-#include "pak/scene_loader.hpp"
-#include "pak/text_file.hpp"
-#include "pak/verify.hpp"
+#include "pak/geom/verify.hpp"
+#include "pak/io/animation_checkpoint.hpp"
+#include "pak/io/animation_output.hpp"
+#include "pak/io/animation_script_reader.hpp"
+#include "pak/io/atomic_file.hpp"
+#include "pak/io/packing_drawing.hpp"
+#include "pak/io/png_renderer.hpp"
+#include "pak/io/scene_loader.hpp"
+#include "pak/io/text_file.hpp"
 
 namespace pak::cli {
 namespace {

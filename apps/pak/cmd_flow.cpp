@@ -9,14 +9,14 @@
 
 #include "command.hpp"
 #include "option_table.hpp"
-#include "pak/atomic_file.hpp"
 #include "pak/error.hpp"
-#include "pak/flow.hpp"
-#include "pak/flow_drawing.hpp"
-#include "pak/png_renderer.hpp"
-#include "pak/scene_loader.hpp"
-#include "pak/svg_writer.hpp"
-#include "pak/verify.hpp"
+#include "pak/flow/flow.hpp"
+#include "pak/geom/verify.hpp"
+#include "pak/io/atomic_file.hpp"
+#include "pak/io/flow_drawing.hpp"
+#include "pak/io/png_renderer.hpp"
+#include "pak/io/scene_loader.hpp"
+#include "pak/io/svg_writer.hpp"
 
 namespace pak::cli {
 namespace {

@@ -15,11 +15,11 @@
 #include <nlohmann/json.hpp>
 
 #include "command.hpp"
-#include "pak/art.hpp"
 #include "pak/error.hpp"
-#include "pak/scene.hpp"
-#include "pak/scene_loader.hpp"
-#include "pak/svg_reader.hpp"
+#include "pak/geom/art.hpp"
+#include "pak/geom/scene.hpp"
+#include "pak/io/scene_loader.hpp"
+#include "pak/io/svg_reader.hpp"
 
 namespace pak::cli {
 namespace {

@@ -14,14 +14,14 @@
 #include <nlohmann/json.hpp>
 
 #include "command.hpp"
-#include "pak/atomic_file.hpp"
-#include "pak/clipping.hpp"
 #include "pak/error.hpp"
-#include "pak/distance_map_image.hpp"
-#include "pak/metrics.hpp"
-#include "pak/metrics_plot.hpp"
-#include "pak/offset_visualization.hpp"
-#include "pak/packing_reader.hpp"
+#include "pak/geom/clipping.hpp"
+#include "pak/io/atomic_file.hpp"
+#include "pak/io/distance_map_image.hpp"
+#include "pak/io/metrics_plot.hpp"
+#include "pak/io/offset_visualization.hpp"
+#include "pak/io/packing_reader.hpp"
+#include "pak/metrics/metrics.hpp"
 
 namespace pak::cli {
 namespace {

@@ -8,12 +8,12 @@
 #include <string>
 
 #include "command.hpp"
-#include "pak/drawing.hpp"
 #include "pak/error.hpp"
-#include "pak/png_renderer.hpp"
-#include "pak/scene_loader.hpp"
-#include "pak/svg_reader.hpp"
-#include "pak/svg_writer.hpp"
+#include "pak/io/drawing.hpp"
+#include "pak/io/png_renderer.hpp"
+#include "pak/io/scene_loader.hpp"
+#include "pak/io/svg_reader.hpp"
+#include "pak/io/svg_writer.hpp"
 
 namespace pak::cli {
 namespace {

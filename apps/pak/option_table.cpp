@@ -1,6 +1,6 @@
 #include "option_table.hpp"
 
-#include "pak/text_file.hpp"
+#include "pak/io/text_file.hpp"
 
 namespace pak::cli {
 

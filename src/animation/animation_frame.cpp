@@ -2,7 +2,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "pak/animation.hpp"
+#include "pak/animation/animation.hpp"
 
 namespace pak {
 

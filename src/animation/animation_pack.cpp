@@ -1,6 +1,6 @@
 // packAnimation: canonical frame, element types, initial configuration (thesis 5.4),
 // simulation (5.5) and collection of the slices.
-#include "pak/animation.hpp"
+#include "pak/animation/animation.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -8,11 +8,12 @@
 #include <map>
 #include <numbers>
 
-#include "pak/blue_noise.hpp"
-#include "pak/canonical_frame.hpp"
-#include "pak/element_animator.hpp"
+#include "animation/element_animator.hpp"
+#include "animation/spacetime_simulation.hpp"
 #include "pak/error.hpp"
-#include "pak/rng.hpp"
+#include "pak/geom/blue_noise.hpp"
+#include "pak/geom/rng.hpp"
+#include "sim/canonical_frame.hpp"
 
 namespace pak {
 

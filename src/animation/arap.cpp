@@ -20,7 +20,7 @@
 // position moved by the displacement of the nearest handle (in the rest shape) for step 1, and
 // the step-1 result for step 2. A single handle thus translates its part rigidly, and a
 // vertex in no triangle follows its nearest handle.
-#include "pak/arap.hpp"
+#include "animation/arap.hpp"
 
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>

@@ -1,4 +1,4 @@
-#include "pak/element_animator.hpp"
+#include "animation/element_animator.hpp"
 
 #include <cmath>
 #include <limits>

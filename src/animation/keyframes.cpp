@@ -14,7 +14,7 @@
 // five-fold star) continues with the same slope; both end tangents are then one and the same
 // and the loop is C1 at the seam. When the keys do not reach both ends, the track wraps: after
 // the last key it runs on to the first key one period later.
-#include "pak/keyframes.hpp"
+#include "pak/animation/keyframes.hpp"
 
 #include <algorithm>
 #include <cassert>

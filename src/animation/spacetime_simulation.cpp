@@ -1,11 +1,11 @@
-#include "pak/spacetime_simulation.hpp"
+#include "animation/spacetime_simulation.hpp"
 
 #include <algorithm>
 #include <cassert>
 #include <cmath>
 #include <limits>
 
-#include "pak/forces.hpp"
+#include "sim/forces.hpp"
 
 namespace pak {
 

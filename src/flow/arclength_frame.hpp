@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "pak/polygon.hpp"
+#include "pak/geom/polygon.hpp"
 
 namespace pak::flow_detail {
 

@@ -2,17 +2,17 @@
 // diagram with a level-set front (Osher & Sethian); here the same front is a multi-source
 // Dijkstra over a grid restricted to the free space, each cell keeping its nearest streamline
 // point (vector propagation), so blobs follow the free space around holes and fixed elements.
-#include "pak/blobs.hpp"
+#include "flow/blobs.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <queue>
 
-#include "pak/clipping.hpp"
 #include "pak/error.hpp"
-#include "pak/region_index.hpp"
-#include "pak/resample.hpp"
+#include "pak/geom/clipping.hpp"
+#include "pak/geom/resample.hpp"
+#include "sim/region_index.hpp"
 
 namespace pak {
 namespace {

@@ -1,20 +1,20 @@
 // packFlow: FLOWPAK's pipeline (thesis 3.3): field and streamlines per container, blobs,
 // initial placement, then the iterative refinement of Algorithm 2 over all containers.
-#include "pak/flow.hpp"
+#include "pak/flow/flow.hpp"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <numeric>
 
-#include "flow_prototype.hpp"
-#include "pak/blobs.hpp"
-#include "pak/clipping.hpp"
-#include "pak/closest_point.hpp"
+#include "flow/blobs.hpp"
+#include "flow/flow_prototype.hpp"
+#include "flow/streamline_shift.hpp"
+#include "flow/streamlines.hpp"
 #include "pak/error.hpp"
-#include "pak/resample.hpp"
-#include "pak/streamline_shift.hpp"
-#include "pak/streamlines.hpp"
+#include "pak/geom/clipping.hpp"
+#include "pak/geom/closest_point.hpp"
+#include "pak/geom/resample.hpp"
 #include "repulsion/containers.hpp"
 
 namespace pak {

@@ -1,4 +1,4 @@
-#include "flow_prototype.hpp"
+#include "flow/flow_prototype.hpp"
 
 #include <cmath>
 #include <numbers>

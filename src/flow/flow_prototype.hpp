@@ -3,9 +3,9 @@
 // rotation the refinement may try (thesis 3.3.2, and "Element Placement" in 3.3.6).
 #include <vector>
 
-#include "pak/lr_function.hpp"
-#include "pak/scene.hpp"
-#include "pak/skeletal_stroke.hpp"
+#include "pak/flow/lr_function.hpp"
+#include "pak/flow/skeletal_stroke.hpp"
+#include "pak/geom/scene.hpp"
 
 namespace pak {
 

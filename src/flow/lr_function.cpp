@@ -1,5 +1,5 @@
 // LR functions and their matching (thesis 3.3.2, 3.3.4, 3.3.5 eq. 3.1).
-#include "pak/lr_function.hpp"
+#include "pak/flow/lr_function.hpp"
 
 #include <algorithm>
 #include <cmath>

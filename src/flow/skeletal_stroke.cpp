@@ -1,6 +1,6 @@
 // Skeletal strokes (thesis 3.3.5 after [HLW93]): an element's (along, across) coordinates
 // relative to its straight spine become (arclength, normal offset) along a streamline.
-#include "pak/skeletal_stroke.hpp"
+#include "pak/flow/skeletal_stroke.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,9 +8,9 @@
 #include <string>
 
 #include "flow/arclength_frame.hpp"
-#include "pak/closest_point.hpp"
 #include "pak/error.hpp"
-#include "pak/segment_grid.hpp"
+#include "pak/geom/closest_point.hpp"
+#include "sim/segment_grid.hpp"
 
 namespace pak {
 

@@ -1,4 +1,4 @@
-#include "pak/streamline_shift.hpp"
+#include "flow/streamline_shift.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,13 +8,13 @@
 #include <queue>
 #include <utility>
 
-#include "pak/bezier_fit.hpp"
-#include "pak/clipping.hpp"
-#include "pak/closest_point.hpp"
 #include "pak/error.hpp"
-#include "pak/region_index.hpp"
-#include "pak/resample.hpp"
-#include "pak/segment_grid.hpp"
+#include "pak/geom/bezier_fit.hpp"
+#include "pak/geom/clipping.hpp"
+#include "pak/geom/closest_point.hpp"
+#include "pak/geom/resample.hpp"
+#include "sim/region_index.hpp"
+#include "sim/segment_grid.hpp"
 
 namespace pak {
 namespace {

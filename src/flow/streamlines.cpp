@@ -1,17 +1,17 @@
 // Algorithm 1 of the thesis (after Jobard & Lefer): streamlines grown from a sorted seed list,
 // each stopping at s_max, near another streamline, at the container's edge or at a fixed
 // element; accepted ones (≥ s_min) seed new candidates s_gap to either side.
-#include "pak/streamlines.hpp"
+#include "flow/streamlines.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <queue>
 
-#include "pak/closest_point.hpp"
 #include "pak/error.hpp"
-#include "pak/region_index.hpp"
-#include "pak/resample.hpp"
-#include "pak/rng.hpp"
+#include "pak/geom/closest_point.hpp"
+#include "pak/geom/resample.hpp"
+#include "pak/geom/rng.hpp"
+#include "sim/region_index.hpp"
 
 namespace pak {
 namespace {

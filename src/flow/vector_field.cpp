@@ -3,14 +3,14 @@
 // On a grid: minimise Σ_edges |v_i − v_j|² + λ Σ_samples |B_s v − t_s|², where B_s spreads
 // guide sample s bilinearly over its four nodes and t_s is the guide's unit tangent there.
 // The x and y components share one sparse system, factored once.
-#include "pak/vector_field.hpp"
+#include "pak/flow/vector_field.hpp"
 
 #include <Eigen/Sparse>
 #include <algorithm>
 #include <cmath>
 
 #include "pak/error.hpp"
-#include "pak/resample.hpp"
+#include "pak/geom/resample.hpp"
 
 namespace pak {
 namespace {

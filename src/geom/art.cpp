@@ -1,4 +1,4 @@
-#include "pak/art.hpp"
+#include "pak/geom/art.hpp"
 
 #include <algorithm>
 

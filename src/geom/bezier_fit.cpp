@@ -1,4 +1,4 @@
-#include "pak/bezier_fit.hpp"
+#include "pak/geom/bezier_fit.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,14 +1,14 @@
-#include "pak/blue_noise.hpp"
+#include "pak/geom/blue_noise.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
 
-#include "pak/closest_point.hpp"
-#include "pak/distance_field.hpp"
 #include "pak/error.hpp"
-#include "pak/rng.hpp"
+#include "pak/geom/closest_point.hpp"
+#include "pak/geom/distance_field.hpp"
+#include "pak/geom/rng.hpp"
 
 namespace pak {
 namespace {

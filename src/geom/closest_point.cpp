@@ -1,4 +1,4 @@
-#include "pak/closest_point.hpp"
+#include "pak/geom/closest_point.hpp"
 
 #include <cmath>
 #include <limits>

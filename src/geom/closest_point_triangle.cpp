@@ -1,4 +1,4 @@
-#include "pak/vec3.hpp"
+#include "pak/geom/vec3.hpp"
 
 namespace pak {
 

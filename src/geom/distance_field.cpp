@@ -1,4 +1,4 @@
-#include "pak/distance_field.hpp"
+#include "pak/geom/distance_field.hpp"
 
 #include <algorithm>
 #include <cassert>

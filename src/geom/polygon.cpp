@@ -1,4 +1,4 @@
-#include "pak/polygon.hpp"
+#include "pak/geom/polygon.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "pak/resample.hpp"
+#include "pak/geom/resample.hpp"
 
 #include <algorithm>
 #include <cmath>

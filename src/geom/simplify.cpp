@@ -1,8 +1,8 @@
 // Douglas–Peucker simplification of closed rings.
 #include <vector>
 
-#include "pak/closest_point.hpp"
-#include "pak/simplify.hpp"
+#include "pak/geom/closest_point.hpp"
+#include "pak/geom/simplify.hpp"
 
 namespace pak {
 namespace {

@@ -1,4 +1,4 @@
-#include "pak/triangulation.hpp"
+#include "pak/geom/triangulation.hpp"
 
 #include <geos_c.h>
 

@@ -1,11 +1,11 @@
-#include "pak/verify.hpp"
+#include "pak/geom/verify.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <numeric>
 #include <sstream>
 
-#include "pak/clipping.hpp"
+#include "pak/geom/clipping.hpp"
 
 namespace pak {
 namespace {

@@ -9,11 +9,11 @@
 #include <unordered_map>
 #include <vector>
 
-#include "animation_frames.hpp"
-#include "pak/animation_output.hpp"
-#include "pak/atomic_file.hpp"
+#include "io/animation_frames.hpp"
+#include "io/svg_builder.hpp"
 #include "pak/error.hpp"
-#include "svg_builder.hpp"
+#include "pak/io/animation_output.hpp"
+#include "pak/io/atomic_file.hpp"
 
 namespace pak {
 namespace {

@@ -1,11 +1,11 @@
-#include "pak/animation_checkpoint.hpp"
+#include "pak/io/animation_checkpoint.hpp"
 
 #include <cmath>
 #include <cstring>
 
-#include "pak/atomic_file.hpp"
 #include "pak/error.hpp"
-#include "pak/text_file.hpp"
+#include "pak/io/atomic_file.hpp"
+#include "pak/io/text_file.hpp"
 
 namespace pak {
 

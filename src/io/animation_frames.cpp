@@ -1,12 +1,12 @@
 // Checks and sizes shared by the animation writers.
-#include "animation_frames.hpp"
+#include "io/animation_frames.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <system_error>
 
-#include "drawing_raster.hpp"
+#include "io/drawing_raster.hpp"
 #include "pak/error.hpp"
 
 namespace pak::animation_frames {

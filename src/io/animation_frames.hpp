@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "pak/animation_output.hpp"
-#include "pak/png_renderer.hpp"
+#include "pak/io/animation_output.hpp"
+#include "pak/io/png_renderer.hpp"
 
 namespace pak::animation_frames {
 

@@ -2,7 +2,7 @@
 // Strict on purpose: an unknown key is an error rather than ignored, since a misspelt
 // "rotaton" would otherwise silently animate nothing. Every error names the file and the JSON
 // path of the offending value ("anim.json: elements[2].rotation[1].t: …").
-#include "pak/animation_script_reader.hpp"
+#include "pak/io/animation_script_reader.hpp"
 
 #include <cmath>
 #include <filesystem>
@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "pak/error.hpp"
-#include "pak/text_file.hpp"
+#include "pak/io/text_file.hpp"
 
 namespace pak {
 namespace {

@@ -1,7 +1,7 @@
 // Atomic file output: write everything to a temporary file in the target's folder, then
 // rename it over the target. rename() within one folder is atomic on POSIX, so readers see
 // either the old file or the complete new one, never a half-written file.
-#include "pak/atomic_file.hpp"
+#include "pak/io/atomic_file.hpp"
 
 #include <fcntl.h>
 #include <unistd.h>

@@ -1,7 +1,7 @@
 // Median cut (Heckbert 1982) over a coarse histogram: boxes of colour cells are split at the
 // pixel-weighted median of their longest side until there are enough boxes; each box gives the
 // mean colour of its pixels.
-#include "color_palette.hpp"
+#include "io/color_palette.hpp"
 
 #include <algorithm>
 #include <array>

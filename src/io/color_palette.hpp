@@ -5,7 +5,7 @@
 #include <optional>
 #include <vector>
 
-#include "pak/png_renderer.hpp"
+#include "pak/io/png_renderer.hpp"
 
 namespace pak::color_palette {
 

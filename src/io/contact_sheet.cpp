@@ -6,12 +6,12 @@
 #include <cmath>
 #include <string>
 
-#include "animation_frames.hpp"
-#include "cairo_output.hpp"
-#include "drawing_raster.hpp"
-#include "pak/animation_output.hpp"
-#include "pak/atomic_file.hpp"
+#include "io/animation_frames.hpp"
+#include "io/cairo_output.hpp"
+#include "io/drawing_raster.hpp"
 #include "pak/error.hpp"
+#include "pak/io/animation_output.hpp"
+#include "pak/io/atomic_file.hpp"
 
 namespace pak {
 

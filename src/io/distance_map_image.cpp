@@ -1,5 +1,5 @@
 // Thesis Fig. 6.3b: the discrete distance transform of the negative space as shades.
-#include "pak/distance_map_image.hpp"
+#include "pak/io/distance_map_image.hpp"
 
 #include <algorithm>
 #include <array>
@@ -7,9 +7,9 @@
 #include <cstdint>
 #include <string>
 
-#include "cairo_output.hpp"
-#include "pak/atomic_file.hpp"
+#include "io/cairo_output.hpp"
 #include "pak/error.hpp"
+#include "pak/io/atomic_file.hpp"
 
 namespace pak {
 namespace {

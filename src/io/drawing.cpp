@@ -1,8 +1,8 @@
 // What a read document shows, grouped by layer, so that `pak render` and the SVG writer
 // draw exactly what the reader understood.
-#include "pak/drawing.hpp"
+#include "pak/io/drawing.hpp"
 
-#include "pak/svg_reader.hpp"
+#include "pak/io/svg_reader.hpp"
 
 namespace pak {
 

@@ -5,9 +5,9 @@
 
 #include <string>
 
-#include "cairo_output.hpp"
-#include "pak/drawing.hpp"
-#include "pak/png_renderer.hpp"
+#include "io/cairo_output.hpp"
+#include "pak/io/drawing.hpp"
+#include "pak/io/png_renderer.hpp"
 
 namespace pak::raster {
 

@@ -3,10 +3,10 @@
 #include <filesystem>
 #include <string>
 
-#include "animation_frames.hpp"
-#include "pak/animation_output.hpp"
-#include "pak/atomic_file.hpp"
-#include "pak/svg_writer.hpp"
+#include "io/animation_frames.hpp"
+#include "pak/io/animation_output.hpp"
+#include "pak/io/atomic_file.hpp"
+#include "pak/io/svg_writer.hpp"
 
 namespace pak {
 namespace {

@@ -10,12 +10,12 @@
 #include <string>
 #include <vector>
 
-#include "animation_frames.hpp"
-#include "color_palette.hpp"
-#include "drawing_raster.hpp"
-#include "pak/animation_output.hpp"
-#include "pak/atomic_file.hpp"
+#include "io/animation_frames.hpp"
+#include "io/color_palette.hpp"
+#include "io/drawing_raster.hpp"
 #include "pak/error.hpp"
+#include "pak/io/animation_output.hpp"
+#include "pak/io/atomic_file.hpp"
 
 namespace pak {
 namespace {

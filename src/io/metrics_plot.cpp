@@ -1,5 +1,5 @@
 // Q, H and O of several packings side by side, drawn with cairo into PNG or SVG bytes.
-#include "pak/metrics_plot.hpp"
+#include "pak/io/metrics_plot.hpp"
 
 #include <algorithm>
 #include <array>
@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "cairo_output.hpp"
-#include "pak/atomic_file.hpp"
+#include "io/cairo_output.hpp"
 #include "pak/error.hpp"
+#include "pak/io/atomic_file.hpp"
 
 namespace pak {
 namespace {

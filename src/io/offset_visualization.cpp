@@ -1,16 +1,16 @@
 // Thesis Fig. 6.4: how the offset elements meet. Overlaps (red) appear where the negative
 // space is narrower than 2r; grey container left uncovered is wider than 2r.
-#include "pak/offset_visualization.hpp"
+#include "pak/io/offset_visualization.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
 
-#include "cairo_output.hpp"
-#include "pak/atomic_file.hpp"
-#include "pak/clipping.hpp"
+#include "io/cairo_output.hpp"
 #include "pak/error.hpp"
+#include "pak/geom/clipping.hpp"
+#include "pak/io/atomic_file.hpp"
 
 namespace pak {
 namespace {

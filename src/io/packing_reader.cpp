@@ -1,14 +1,14 @@
-#include "pak/packing_reader.hpp"
+#include "pak/io/packing_reader.hpp"
 
 #include <algorithm>
 #include <cctype>
 #include <map>
 #include <vector>
 
-#include "pak/art.hpp"
-#include "pak/clipping.hpp"
 #include "pak/error.hpp"
-#include "pak/scene_loader.hpp"
+#include "pak/geom/art.hpp"
+#include "pak/geom/clipping.hpp"
+#include "pak/io/scene_loader.hpp"
 
 namespace pak {
 namespace {

@@ -7,7 +7,7 @@
 //
 // The paths become shapes of an SvgDocument so that the rest of Pak treats both formats
 // alike; the path type becomes the layer.
-#include "pak/path_reader.hpp"
+#include "pak/io/path_reader.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -23,7 +23,7 @@
 #include <vector>
 
 #include "pak/error.hpp"
-#include "pak/text_file.hpp"
+#include "pak/io/text_file.hpp"
 
 namespace pak {
 namespace {

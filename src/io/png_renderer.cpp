@@ -1,7 +1,7 @@
 // Renders a Drawing with cairo into an anti-aliased ARGB image and saves it as PNG, or hands
 // the pixels to the animation writers (drawing_raster.hpp).
 // Every call owns its surface and context, so concurrent calls (tests, batch renders) are safe.
-#include "pak/png_renderer.hpp"
+#include "pak/io/png_renderer.hpp"
 
 #include <cairo.h>
 
@@ -11,10 +11,10 @@
 #include <memory>
 #include <string>
 
-#include "cairo_output.hpp"
-#include "drawing_raster.hpp"
-#include "pak/atomic_file.hpp"
+#include "io/cairo_output.hpp"
+#include "io/drawing_raster.hpp"
 #include "pak/error.hpp"
+#include "pak/io/atomic_file.hpp"
 
 namespace pak {
 namespace {

@@ -1,7 +1,7 @@
 // Interprets read documents as scenes and element libraries, following the input
 // conventions of DESIGN.md: layers `container`, `fixed`, `guides`, `spines` (and `holes`
 // for legacy .path files); everything else in an element file is the element's art.
-#include "pak/scene_loader.hpp"
+#include "pak/io/scene_loader.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "pak/error.hpp"
-#include "pak/packing_reader.hpp"
-#include "pak/path_reader.hpp"
+#include "pak/io/packing_reader.hpp"
+#include "pak/io/path_reader.hpp"
 
 namespace pak {
 namespace {

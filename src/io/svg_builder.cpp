@@ -1,6 +1,6 @@
 // Pak's SVG markup: number and colour formatting, path data, and the builder that writes
 // groups and shapes. Moved out of svg_writer.cpp so the animated SVG writer shares it.
-#include "svg_builder.hpp"
+#include "io/svg_builder.hpp"
 
 #include <algorithm>
 #include <array>
@@ -11,8 +11,8 @@
 #include <map>
 #include <string>
 
-#include "pak/bezier_fit.hpp"
 #include "pak/error.hpp"
+#include "pak/geom/bezier_fit.hpp"
 
 namespace pak::svg_builder {
 namespace {

@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "pak/drawing.hpp"
+#include "pak/io/drawing.hpp"
 
 namespace pak::svg_builder {
 

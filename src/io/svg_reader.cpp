@@ -6,7 +6,7 @@
 // the checks that turn bad input into InputError.
 //
 // All SVG++ code lives in this one translation unit on purpose: it takes ~20 s to compile.
-#include "pak/svg_reader.hpp"
+#include "pak/io/svg_reader.hpp"
 
 #include <rapidxml_ns/rapidxml_ns.hpp>
 #include <svgpp/policy/xml/rapidxml_ns.hpp>
@@ -30,7 +30,7 @@
 #include <vector>
 
 #include "pak/error.hpp"
-#include "pak/text_file.hpp"
+#include "pak/io/text_file.hpp"
 
 namespace pak {
 namespace {

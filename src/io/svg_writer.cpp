@@ -1,15 +1,15 @@
 // Writes a Drawing as plain SVG 1.1: one <g> per DrawingGroup, one <path> per Shape, paint as
 // presentation attributes (no CSS), so Inkscape, Illustrator, browsers and Pak's own reader
 // all see the same picture. Top-level groups are also marked as Inkscape layers.
-#include "pak/svg_writer.hpp"
+#include "pak/io/svg_writer.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <string>
 
-#include "pak/atomic_file.hpp"
+#include "io/svg_builder.hpp"
 #include "pak/error.hpp"
-#include "svg_builder.hpp"
+#include "pak/io/atomic_file.hpp"
 
 namespace pak {
 

@@ -1,4 +1,4 @@
-#include "pak/text_file.hpp"
+#include "pak/io/text_file.hpp"
 
 #include <filesystem>
 #include <fstream>

@@ -18,11 +18,11 @@
 #include <string>
 #include <vector>
 
-#include "animation_frames.hpp"
-#include "drawing_raster.hpp"
-#include "pak/animation_output.hpp"
-#include "pak/atomic_file.hpp"
+#include "io/animation_frames.hpp"
+#include "io/drawing_raster.hpp"
 #include "pak/error.hpp"
+#include "pak/io/animation_output.hpp"
+#include "pak/io/atomic_file.hpp"
 
 extern char** environ;
 

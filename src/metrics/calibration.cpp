@@ -4,7 +4,7 @@
 #include <cmath>
 #include <string>
 
-#include "metrics_internal.hpp"
+#include "metrics/metrics_internal.hpp"
 #include "pak/error.hpp"
 
 namespace pak {

@@ -4,9 +4,9 @@
 #include <cmath>
 #include <cstdint>
 
-#include "metrics_internal.hpp"
-#include "pak/distance_field.hpp"
+#include "metrics/metrics_internal.hpp"
 #include "pak/error.hpp"
+#include "pak/geom/distance_field.hpp"
 
 namespace pak::metrics_internal {
 namespace {

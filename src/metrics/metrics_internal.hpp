@@ -4,8 +4,8 @@
 #include <functional>
 #include <vector>
 
-#include "pak/clipping.hpp"
-#include "pak/metrics.hpp"
+#include "pak/geom/clipping.hpp"
+#include "pak/metrics/metrics.hpp"
 
 namespace pak::metrics_internal {
 

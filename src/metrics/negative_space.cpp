@@ -3,9 +3,9 @@
 #include <cmath>
 #include <string>
 
-#include "metrics_internal.hpp"
+#include "metrics/metrics_internal.hpp"
 #include "pak/error.hpp"
-#include "pak/simplify.hpp"
+#include "pak/geom/simplify.hpp"
 
 namespace pak::metrics_internal {
 

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "metrics_internal.hpp"
-#include "pak/closest_point.hpp"
+#include "metrics/metrics_internal.hpp"
+#include "pak/geom/closest_point.hpp"
 
 namespace pak {
 namespace metrics_internal {

@@ -2,7 +2,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "metrics_internal.hpp"
+#include "metrics/metrics_internal.hpp"
 #include "pak/error.hpp"
 
 namespace pak {

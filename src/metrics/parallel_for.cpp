@@ -5,8 +5,8 @@
 #include <thread>
 #include <vector>
 
-#include "metrics_internal.hpp"
-#include "pak/parallel.hpp"
+#include "metrics/metrics_internal.hpp"
+#include "sim/parallel.hpp"
 
 namespace pak::metrics_internal {
 

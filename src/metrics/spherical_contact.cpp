@@ -2,7 +2,7 @@
 // radius r, by an exact polygon offset, over the container area.
 #include <algorithm>
 
-#include "metrics_internal.hpp"
+#include "metrics/metrics_internal.hpp"
 
 namespace pak {
 namespace metrics_internal {

@@ -1,9 +1,9 @@
-#include "containers.hpp"
+#include "repulsion/containers.hpp"
 
 #include <algorithm>
 #include <numeric>
 
-#include "pak/rng.hpp"
+#include "pak/geom/rng.hpp"
 
 namespace pak {
 

@@ -4,10 +4,10 @@
 #include <cstdint>
 #include <vector>
 
-#include "pak/polygon.hpp"
-#include "pak/region_index.hpp"
-#include "pak/scene.hpp"
-#include "seeding.hpp"
+#include "pak/geom/polygon.hpp"
+#include "pak/geom/scene.hpp"
+#include "repulsion/seeding.hpp"
+#include "sim/region_index.hpp"
 
 namespace pak {
 

@@ -1,4 +1,4 @@
-#include "corner_docking.hpp"
+#include "repulsion/corner_docking.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -4,11 +4,11 @@
 // with their matched tip on the corner, and are held there by docking springs.
 #include <vector>
 
-#include "packing_simulation.hpp"
-#include "pak/element_mesh.hpp"
-#include "pak/region_index.hpp"
-#include "pak/shape_matching.hpp"
-#include "seeding.hpp"
+#include "pak/repulsion/shape_matching.hpp"
+#include "pak/sim/element_mesh.hpp"
+#include "repulsion/packing_simulation.hpp"
+#include "repulsion/seeding.hpp"
+#include "sim/region_index.hpp"
 
 namespace pak {
 

@@ -1,4 +1,4 @@
-#include "pak/orientation.hpp"
+#include "pak/repulsion/orientation.hpp"
 
 #include <cmath>
 #include <cstdlib>

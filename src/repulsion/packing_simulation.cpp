@@ -1,9 +1,9 @@
-#include "packing_simulation.hpp"
+#include "repulsion/packing_simulation.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "pak/forces.hpp"
+#include "sim/forces.hpp"
 
 namespace pak {
 

@@ -5,11 +5,11 @@
 #include <cstdint>
 #include <vector>
 
-#include "pak/element_mesh.hpp"
-#include "pak/orientation.hpp"
-#include "pak/parallel.hpp"
-#include "pak/region_index.hpp"
-#include "pak/segment_grid.hpp"
+#include "pak/repulsion/orientation.hpp"
+#include "pak/sim/element_mesh.hpp"
+#include "sim/parallel.hpp"
+#include "sim/region_index.hpp"
+#include "sim/segment_grid.hpp"
 
 namespace pak {
 

@@ -5,18 +5,18 @@
 #include <optional>
 #include <string>
 
-#include "containers.hpp"
-#include "corner_docking.hpp"
-#include "packing_simulation.hpp"
-#include "pak/canonical_frame.hpp"
-#include "pak/clipping.hpp"
 #include "pak/error.hpp"
-#include "pak/verify.hpp"
-#include "pak/repulsion.hpp"
-#include "pak/rng.hpp"
-#include "pak/tiling.hpp"
-#include "secondary_seeding.hpp"
-#include "seeding.hpp"
+#include "pak/geom/clipping.hpp"
+#include "pak/geom/rng.hpp"
+#include "pak/geom/verify.hpp"
+#include "pak/repulsion/repulsion.hpp"
+#include "pak/repulsion/tiling.hpp"
+#include "repulsion/containers.hpp"
+#include "repulsion/corner_docking.hpp"
+#include "repulsion/packing_simulation.hpp"
+#include "repulsion/secondary_seeding.hpp"
+#include "repulsion/seeding.hpp"
+#include "sim/canonical_frame.hpp"
 
 namespace pak {
 

@@ -1,4 +1,4 @@
-#include "pak/repulsion_presets.hpp"
+#include "pak/repulsion/repulsion_presets.hpp"
 
 #include <cmath>
 

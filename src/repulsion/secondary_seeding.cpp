@@ -1,11 +1,11 @@
-#include "secondary_seeding.hpp"
+#include "repulsion/secondary_seeding.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <unordered_map>
 
-#include "pak/distance_field.hpp"
+#include "pak/geom/distance_field.hpp"
 
 namespace pak {
 

@@ -3,7 +3,7 @@
 // a distance transform of the negative space left by the primary pass.
 #include <vector>
 
-#include "pak/polygon.hpp"
+#include "pak/geom/polygon.hpp"
 
 namespace pak {
 

@@ -1,13 +1,13 @@
-#include "seeding.hpp"
+#include "repulsion/seeding.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
 
-#include "pak/blue_noise.hpp"
-#include "pak/rng.hpp"
-#include "pak/tiling.hpp"
+#include "pak/geom/blue_noise.hpp"
+#include "pak/geom/rng.hpp"
+#include "pak/repulsion/tiling.hpp"
 
 namespace pak {
 

@@ -4,8 +4,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "pak/polygon.hpp"
-#include "pak/region_index.hpp"
+#include "pak/geom/polygon.hpp"
+#include "sim/region_index.hpp"
 
 namespace pak {
 

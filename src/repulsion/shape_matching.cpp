@@ -1,13 +1,13 @@
-#include "pak/shape_matching.hpp"
+#include "pak/repulsion/shape_matching.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <nanoflann.hpp>
 #include <numeric>
 
-#include "pak/distance_field.hpp"
 #include "pak/error.hpp"
-#include "pak/resample.hpp"
+#include "pak/geom/distance_field.hpp"
+#include "pak/geom/resample.hpp"
 
 namespace pak {
 

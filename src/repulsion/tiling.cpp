@@ -1,13 +1,13 @@
 // Tileable packings (thesis 4.8): periodic geometry shared by seeding, the seeding check,
 // output drawing and verification. The simulation's own periodic neighbour search lives in
 // packing_simulation.cpp (it needs the grid).
-#include "pak/tiling.hpp"
+#include "pak/repulsion/tiling.hpp"
 
 #include <cmath>
 #include <string>
 
-#include "pak/clipping.hpp"
 #include "pak/error.hpp"
+#include "pak/geom/clipping.hpp"
 
 namespace pak {
 

@@ -1,10 +1,10 @@
-#include "pak/region_index.hpp"
+#include "sim/region_index.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-#include "pak/closest_point.hpp"
+#include "pak/geom/closest_point.hpp"
 
 namespace pak {
 

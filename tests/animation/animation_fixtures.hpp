@@ -5,7 +5,7 @@
 #include <numbers>
 #include <string>
 
-#include "pak/animation.hpp"
+#include "pak/animation/animation.hpp"
 
 namespace pak::test {
 

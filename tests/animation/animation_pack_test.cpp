@@ -1,11 +1,11 @@
 // packAnimation end to end on a small scene, and frames (thesis 5.4–5.6).
-#include "pak/animation.hpp"
+#include "pak/animation/animation.hpp"
 
 #include <gtest/gtest.h>
 
 #include "animation/animation_fixtures.hpp"
 #include "pak/error.hpp"
-#include "pak/verify.hpp"
+#include "pak/geom/verify.hpp"
 
 namespace pak {
 namespace {

@@ -1,5 +1,5 @@
 // As-rigid-as-possible deformation (Igarashi et al. 2005) on small grid meshes.
-#include "pak/arap.hpp"
+#include "animation/arap.hpp"
 
 #include <gtest/gtest.h>
 

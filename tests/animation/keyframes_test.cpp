@@ -1,5 +1,5 @@
 // Keyframe tracks: Catmull–Rom (finite-difference tangents) through keys at uneven times.
-#include "pak/keyframes.hpp"
+#include "pak/animation/keyframes.hpp"
 
 #include <gtest/gtest.h>
 

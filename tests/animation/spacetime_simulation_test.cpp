@@ -1,10 +1,10 @@
 // The spacetime simulation's hard constraints (thesis 5.5.2), determinism and checkpoints.
-#include "pak/spacetime_simulation.hpp"
+#include "animation/spacetime_simulation.hpp"
 
 #include <gtest/gtest.h>
 
 #include "animation/animation_fixtures.hpp"
-#include "pak/canonical_frame.hpp"
+#include "sim/canonical_frame.hpp"
 
 namespace pak {
 namespace {

@@ -3,9 +3,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "pak/packing_reader.hpp"
-#include "pak/scene_loader.hpp"
-#include "pak/verify.hpp"
+#include "pak/geom/verify.hpp"
+#include "pak/io/packing_reader.hpp"
+#include "pak/io/scene_loader.hpp"
 #include "run_pak.hpp"
 
 using namespace pak::testing;

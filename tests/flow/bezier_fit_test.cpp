@@ -1,12 +1,12 @@
-#include "pak/bezier_fit.hpp"
+#include "pak/geom/bezier_fit.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 
-#include "pak/closest_point.hpp"
 #include "pak/error.hpp"
+#include "pak/geom/closest_point.hpp"
 
 namespace pak {
 namespace {

@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "pak/blobs.hpp"
-#include "pak/clipping.hpp"
+#include "flow/blobs.hpp"
+#include "pak/geom/clipping.hpp"
 
 namespace pak {
 namespace {

@@ -5,10 +5,10 @@
 
 #include <cmath>
 
-#include "pak/clipping.hpp"
 #include "pak/error.hpp"
-#include "pak/flow.hpp"
-#include "pak/verify.hpp"
+#include "pak/flow/flow.hpp"
+#include "pak/geom/clipping.hpp"
+#include "pak/geom/verify.hpp"
 
 namespace pak {
 namespace {

@@ -1,4 +1,4 @@
-#include "pak/lr_function.hpp"
+#include "pak/flow/lr_function.hpp"
 
 #include <gtest/gtest.h>
 

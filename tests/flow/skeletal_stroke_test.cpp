@@ -1,4 +1,4 @@
-#include "pak/skeletal_stroke.hpp"
+#include "pak/flow/skeletal_stroke.hpp"
 
 #include <gtest/gtest.h>
 
@@ -6,9 +6,9 @@
 #include <cmath>
 #include <numbers>
 
-#include "pak/clipping.hpp"
-#include "pak/closest_point.hpp"
 #include "pak/error.hpp"
+#include "pak/geom/clipping.hpp"
+#include "pak/geom/closest_point.hpp"
 
 namespace pak {
 namespace {

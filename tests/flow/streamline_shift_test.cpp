@@ -1,4 +1,4 @@
-#include "pak/streamline_shift.hpp"
+#include "flow/streamline_shift.hpp"
 
 #include <gtest/gtest.h>
 
@@ -7,8 +7,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "pak/clipping.hpp"
 #include "pak/error.hpp"
+#include "pak/geom/clipping.hpp"
 
 namespace pak {
 

@@ -6,9 +6,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "pak/closest_point.hpp"
-#include "pak/resample.hpp"
-#include "pak/streamlines.hpp"
+#include "flow/streamlines.hpp"
+#include "pak/geom/closest_point.hpp"
+#include "pak/geom/resample.hpp"
 
 namespace pak {
 namespace {

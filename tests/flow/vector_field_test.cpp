@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "pak/error.hpp"
-#include "pak/vector_field.hpp"
+#include "pak/flow/vector_field.hpp"
 
 namespace pak {
 namespace {

@@ -1,4 +1,4 @@
-#include "pak/blue_noise.hpp"
+#include "pak/geom/blue_noise.hpp"
 
 #include <gtest/gtest.h>
 
@@ -6,9 +6,9 @@
 #include <limits>
 #include <numbers>
 
-#include "pak/clipping.hpp"
-#include "pak/closest_point.hpp"
 #include "pak/error.hpp"
+#include "pak/geom/clipping.hpp"
+#include "pak/geom/closest_point.hpp"
 
 using namespace pak;
 

@@ -1,4 +1,4 @@
-#include "pak/clipping.hpp"
+#include "pak/geom/clipping.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
 // closestPointOnTriangle against known answers and a dense sampling of the triangle.
 #include <gtest/gtest.h>
 
-#include "pak/rng.hpp"
-#include "pak/vec3.hpp"
+#include "pak/geom/rng.hpp"
+#include "pak/geom/vec3.hpp"
 
 namespace pak {
 namespace {

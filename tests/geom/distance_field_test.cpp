@@ -1,4 +1,4 @@
-#include "pak/distance_field.hpp"
+#include "pak/geom/distance_field.hpp"
 
 #include <gtest/gtest.h>
 
@@ -6,9 +6,9 @@
 #include <cmath>
 #include <limits>
 
-#include "pak/closest_point.hpp"
 #include "pak/error.hpp"
-#include "pak/rng.hpp"
+#include "pak/geom/closest_point.hpp"
+#include "pak/geom/rng.hpp"
 
 using namespace pak;
 

@@ -2,8 +2,8 @@
 
 #include <cmath>
 
-#include "pak/closest_point.hpp"
-#include "pak/simplify.hpp"
+#include "pak/geom/closest_point.hpp"
+#include "pak/geom/simplify.hpp"
 
 namespace pak {
 namespace {

@@ -1,4 +1,4 @@
-#include "pak/tri_mesh.hpp"
+#include "pak/geom/tri_mesh.hpp"
 
 #include <gtest/gtest.h>
 

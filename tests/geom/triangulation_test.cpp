@@ -1,4 +1,4 @@
-#include "pak/triangulation.hpp"
+#include "pak/geom/triangulation.hpp"
 
 #include <gtest/gtest.h>
 
@@ -6,10 +6,10 @@
 #include <limits>
 #include <thread>
 
-#include "pak/blue_noise.hpp"
 #include "pak/error.hpp"
-#include "pak/resample.hpp"
-#include "pak/verify.hpp"
+#include "pak/geom/blue_noise.hpp"
+#include "pak/geom/resample.hpp"
+#include "pak/geom/verify.hpp"
 
 using namespace pak;
 

@@ -1,4 +1,4 @@
-#include "pak/verify.hpp"
+#include "pak/geom/verify.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // Checkpoints round-trip bit for bit and refuse files that are not theirs.
-#include "pak/animation_checkpoint.hpp"
+#include "pak/io/animation_checkpoint.hpp"
 
 #include <gtest/gtest.h>
 
@@ -7,7 +7,7 @@
 #include <fstream>
 
 #include "pak/error.hpp"
-#include "pak/text_file.hpp"
+#include "pak/io/text_file.hpp"
 
 namespace pak {
 namespace {

@@ -1,7 +1,7 @@
 // Animation outputs: a red square moving across three frames, written as PNG frames, SVG
 // frames, an animated SVG, a GIF, a video and a contact sheet, then read back: files, sizes,
 // the colour under the square in every frame, and errors that leave no file behind.
-#include "pak/animation_output.hpp"
+#include "pak/io/animation_output.hpp"
 
 #include <gtest/gtest.h>
 #include <rapidxml_ns/rapidxml_ns.hpp>
@@ -20,8 +20,8 @@
 #include "io/color_palette.hpp"
 #include "io/gif_decoder.hpp"
 #include "pak/error.hpp"
-#include "pak/png_renderer.hpp"
-#include "pak/svg_reader.hpp"
+#include "pak/io/png_renderer.hpp"
+#include "pak/io/svg_reader.hpp"
 
 namespace fs = std::filesystem;
 using pak::testing::near;

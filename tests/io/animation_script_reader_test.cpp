@@ -1,5 +1,5 @@
 // The AnimationPak animation file (docs/animation-format.md): values and every error class.
-#include "pak/animation_script_reader.hpp"
+#include "pak/io/animation_script_reader.hpp"
 
 #include <gtest/gtest.h>
 

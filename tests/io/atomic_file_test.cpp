@@ -1,5 +1,5 @@
 // Atomic writes: the target gets the whole content or stays as it was; no temporary is left.
-#include "pak/atomic_file.hpp"
+#include "pak/io/atomic_file.hpp"
 
 #include <gtest/gtest.h>
 #include <unistd.h>

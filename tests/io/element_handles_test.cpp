@@ -4,7 +4,7 @@
 #include <string>
 
 #include "pak/error.hpp"
-#include "pak/scene_loader.hpp"
+#include "pak/io/scene_loader.hpp"
 
 namespace pak {
 namespace {

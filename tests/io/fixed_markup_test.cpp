@@ -5,9 +5,9 @@
 
 #include <string>
 
-#include "pak/drawing.hpp"
-#include "pak/svg_reader.hpp"
-#include "pak/svg_writer.hpp"
+#include "pak/io/drawing.hpp"
+#include "pak/io/svg_reader.hpp"
+#include "pak/io/svg_writer.hpp"
 
 namespace pak {
 namespace {

@@ -1,12 +1,12 @@
 // Reading packings for the metrics: Pak's layout, named layers, and the largest-shape fallback.
-#include "pak/packing_reader.hpp"
+#include "pak/io/packing_reader.hpp"
 
 #include <gtest/gtest.h>
 
 #include <string>
 
 #include "pak/error.hpp"
-#include "pak/svg_reader.hpp"
+#include "pak/io/svg_reader.hpp"
 
 namespace {
 

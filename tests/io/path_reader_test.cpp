@@ -1,5 +1,5 @@
 // The legacy RepulsionPak `.path` format on small hand-written files.
-#include "pak/path_reader.hpp"
+#include "pak/io/path_reader.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // PNG rendering: reads the written PNG back with cairo and checks pixels whose colour is
 // certain (far from any anti-aliased edge).
-#include "pak/png_renderer.hpp"
+#include "pak/io/png_renderer.hpp"
 
 #include <cairo/cairo.h>
 #include <gtest/gtest.h>

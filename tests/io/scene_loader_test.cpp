@@ -1,6 +1,6 @@
 // Scenes and element libraries from documents (the input conventions of DESIGN.md), and
 // the drawing `pak render` shows.
-#include "pak/scene_loader.hpp"
+#include "pak/io/scene_loader.hpp"
 
 #include <gtest/gtest.h>
 
@@ -11,9 +11,9 @@
 #include <fstream>
 #include <string>
 
-#include "pak/drawing.hpp"
 #include "pak/error.hpp"
-#include "pak/path_reader.hpp"
+#include "pak/io/drawing.hpp"
+#include "pak/io/path_reader.hpp"
 
 namespace pak {
 namespace {

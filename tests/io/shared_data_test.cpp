@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "pak/path_reader.hpp"
-#include "pak/scene_loader.hpp"
-#include "pak/svg_reader.hpp"
+#include "pak/io/path_reader.hpp"
+#include "pak/io/scene_loader.hpp"
+#include "pak/io/svg_reader.hpp"
 
 namespace pak {
 namespace {

@@ -1,5 +1,5 @@
 // Parser tests on small hand-written SVG documents whose geometry is known exactly.
-#include "pak/svg_reader.hpp"
+#include "pak/io/svg_reader.hpp"
 
 #include <gtest/gtest.h>
 

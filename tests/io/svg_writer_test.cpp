@@ -1,6 +1,6 @@
 // SVG writer: well-formed XML (parsed back with rapidxml_ns), the attributes artists' tools
 // need, escaping, atomic files, and a round trip through Pak's own SVG reader.
-#include "pak/svg_writer.hpp"
+#include "pak/io/svg_writer.hpp"
 
 #include <gtest/gtest.h>
 #include <rapidxml_ns/rapidxml_ns.hpp>
@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "pak/error.hpp"
-#include "pak/svg_reader.hpp"
+#include "pak/io/svg_reader.hpp"
 
 namespace fs = std::filesystem;
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "pak/metrics.hpp"
+#include "pak/metrics/metrics.hpp"
 
 namespace pak::test {
 

@@ -7,14 +7,14 @@
 #include <filesystem>
 #include <set>
 
-#include "pak/clipping.hpp"
 #include "pak/error.hpp"
-#include "pak/packing_drawing.hpp"
-#include "pak/repulsion.hpp"
-#include "pak/scene_loader.hpp"
-#include "pak/svg_reader.hpp"
-#include "pak/svg_writer.hpp"
-#include "pak/verify.hpp"
+#include "pak/geom/clipping.hpp"
+#include "pak/geom/verify.hpp"
+#include "pak/io/packing_drawing.hpp"
+#include "pak/io/scene_loader.hpp"
+#include "pak/io/svg_reader.hpp"
+#include "pak/io/svg_writer.hpp"
+#include "pak/repulsion/repulsion.hpp"
 
 using namespace pak;
 namespace fs = std::filesystem;

@@ -5,14 +5,14 @@
 #include <filesystem>
 #include <fstream>
 
-#include "pak/clipping.hpp"
 #include "pak/error.hpp"
-#include "pak/packing_drawing.hpp"
-#include "pak/repulsion.hpp"
-#include "pak/repulsion_presets.hpp"
-#include "pak/scene_loader.hpp"
-#include "pak/svg_writer.hpp"
-#include "pak/verify.hpp"
+#include "pak/geom/clipping.hpp"
+#include "pak/geom/verify.hpp"
+#include "pak/io/packing_drawing.hpp"
+#include "pak/io/scene_loader.hpp"
+#include "pak/io/svg_writer.hpp"
+#include "pak/repulsion/repulsion.hpp"
+#include "pak/repulsion/repulsion_presets.hpp"
 
 using namespace pak;
 

@@ -2,8 +2,8 @@
 // Meshes the repulsion tests share: a hand-made square and library art meshed at a chosen size.
 #include <vector>
 
-#include "pak/scene.hpp"
-#include "pak/element_mesh.hpp"
+#include "pak/geom/scene.hpp"
+#include "pak/sim/element_mesh.hpp"
 
 namespace pak::test {
 

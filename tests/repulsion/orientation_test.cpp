@@ -1,6 +1,6 @@
 // Preferred orientations (thesis 4.5, eq. 4.6, Figure 4.11): elements end near the angle of
 // the field at their position, measured from their art against the library's.
-#include "pak/orientation.hpp"
+#include "pak/repulsion/orientation.hpp"
 
 #include <gtest/gtest.h>
 
@@ -8,9 +8,9 @@
 #include <numbers>
 
 #include "pak/error.hpp"
-#include "pak/repulsion.hpp"
-#include "pak/scene_loader.hpp"
-#include "pak/verify.hpp"
+#include "pak/geom/verify.hpp"
+#include "pak/io/scene_loader.hpp"
+#include "pak/repulsion/repulsion.hpp"
 
 using namespace pak;
 

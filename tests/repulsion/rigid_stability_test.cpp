@@ -4,11 +4,11 @@
 
 #include <cmath>
 
-#include "pak/element_mesh.hpp"
-#include "pak/repulsion.hpp"
-#include "pak/repulsion_presets.hpp"
-#include "pak/rng.hpp"
-#include "pak/scene_loader.hpp"
+#include "pak/geom/rng.hpp"
+#include "pak/io/scene_loader.hpp"
+#include "pak/repulsion/repulsion.hpp"
+#include "pak/repulsion/repulsion_presets.hpp"
+#include "pak/sim/element_mesh.hpp"
 #include "repulsion/mesh_fixtures.hpp"
 #include "repulsion/packing_simulation.hpp"
 

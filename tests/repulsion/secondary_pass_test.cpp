@@ -4,12 +4,12 @@
 
 #include <cmath>
 
-#include "pak/clipping.hpp"
-#include "pak/packing_drawing.hpp"
-#include "pak/repulsion.hpp"
-#include "pak/scene_loader.hpp"
-#include "pak/svg_writer.hpp"
-#include "pak/verify.hpp"
+#include "pak/geom/clipping.hpp"
+#include "pak/geom/verify.hpp"
+#include "pak/io/packing_drawing.hpp"
+#include "pak/io/scene_loader.hpp"
+#include "pak/io/svg_writer.hpp"
+#include "pak/repulsion/repulsion.hpp"
 #include "repulsion/secondary_seeding.hpp"
 
 using namespace pak;

@@ -1,15 +1,15 @@
-#include "pak/shape_matching.hpp"
+#include "pak/repulsion/shape_matching.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 
-#include "pak/closest_point.hpp"
-#include "pak/packing_drawing.hpp"
-#include "pak/repulsion.hpp"
-#include "pak/svg_writer.hpp"
-#include "pak/verify.hpp"
+#include "pak/geom/closest_point.hpp"
+#include "pak/geom/verify.hpp"
+#include "pak/io/packing_drawing.hpp"
+#include "pak/io/svg_writer.hpp"
+#include "pak/repulsion/repulsion.hpp"
 
 using namespace pak;
 

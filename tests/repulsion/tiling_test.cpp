@@ -1,17 +1,17 @@
 // Tileable packings (thesis 4.8): periodic geometry, the periodic simulation, and the
 // seamlessness of the result (the 2 × 2 repetition of a tile passes verifyPacking).
-#include "pak/tiling.hpp"
+#include "pak/repulsion/tiling.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "pak/error.hpp"
-#include "pak/packing_drawing.hpp"
-#include "pak/repulsion.hpp"
-#include "pak/scene_loader.hpp"
-#include "pak/svg_writer.hpp"
-#include "pak/verify.hpp"
+#include "pak/geom/verify.hpp"
+#include "pak/io/packing_drawing.hpp"
+#include "pak/io/scene_loader.hpp"
+#include "pak/io/svg_writer.hpp"
+#include "pak/repulsion/repulsion.hpp"
 #include "repulsion/mesh_fixtures.hpp"
 #include "repulsion/packing_simulation.hpp"
 

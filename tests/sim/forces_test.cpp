@@ -1,4 +1,4 @@
-#include "pak/forces.hpp"
+#include "sim/forces.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "pak/parallel.hpp"
+#include "sim/parallel.hpp"
 
 #include <gtest/gtest.h>
 

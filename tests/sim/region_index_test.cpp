@@ -1,8 +1,8 @@
-#include "pak/region_index.hpp"
+#include "sim/region_index.hpp"
 
 #include <gtest/gtest.h>
 
-#include "pak/rng.hpp"
+#include "pak/geom/rng.hpp"
 
 using namespace pak;
 

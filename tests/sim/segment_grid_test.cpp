@@ -1,4 +1,4 @@
-#include "pak/segment_grid.hpp"
+#include "sim/segment_grid.hpp"
 
 #include <gtest/gtest.h>
 

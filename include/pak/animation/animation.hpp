@@ -1,0 +1,112 @@
+#pragma once
+// AnimationPak (thesis chapter 5): pack animated elements into a static container.
+//
+//   AnimatedPacking a = packAnimation(scene, library, script, options);
+//   Packing frame = animationFrame(a, 0.25);   // any t ∈ [0, 1]: a static packing
+//
+// `library[i]` is the art of `script.elements[i]`. Like RepulsionPak, the container's bounding
+// square maps to a canonical 1000 × 1000 frame and the time axis to [0, timeLength] there.
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "pak/animation/animation_script.hpp"
+#include "pak/animation/spacetime_parameters.hpp"
+#include "pak/geom/scene.hpp"
+#include "pak/geom/vec3.hpp"
+#include "pak/repulsion/repulsion.hpp"
+#include "pak/sim/element_mesh.hpp"
+
+namespace pak {
+
+struct AnimationOptions {
+  int slices = 0;                 // n_s; 0: the script's
+  // Nominal skin area of one element (growth 1) as a fraction of the container's area;
+  // 0: 1 / (number of elements), the size at which they would exactly fill it.
+  double elementArea = 0.0;
+  double gap = 0.08;              // d_gap as a fraction of the nominal element size (thesis 0.08)
+  double meshSpacing = 0.0;       // slice mesh spacing, canonical units; 0: nominal size / 4
+  double initialScale = 0.1;      // elements start shrunk to this (thesis 5–10 %), or less to fit
+  SpacetimeParameters simulation; // forces, integration, growth, grid (canonical units)
+  double torsionStrength = 10.0;  // k_tor of elements with a preferred orientation
+  // Stop when every slice is within this distance of another element or the wall (5.5.3,
+  // thesis 0.006 of the container), when every slice reached the growth cap, or at the cap.
+  double closeness = 6.0;
+  // ... or when the slices' mean growth rose by less than stallGrowth over the last
+  // stallWindow iterations (a slice grows by growthRate × Δt = 0.001 per free iteration).
+  double stallGrowth = 0.005;
+  int stallWindow = 100;
+  int maxIterations = 3000;
+  std::uint64_t seed = 1;
+  int threads = 0;                // 0: all cores; results do not depend on it
+};
+
+// Everything a checkpoint holds; the rest is rebuilt from the same inputs.
+struct AnimationState {
+  int iteration = 0;
+  std::vector<Vec3> positions, velocities;
+  std::vector<double> growth;
+  // The stopping rule's memory: mean growth of recent iterations (a ring indexed by
+  // iteration) and how many iterations it has seen.
+  std::vector<double> recentMeanGrowth;
+  int recorded = 0;
+};
+
+struct AnimationProgress {
+  int iteration = 0;
+  double fill = 0.0;             // mean over slices of the skins' area / container area
+  int growingSlices = 0, overlappingSlices = 0, slices = 0;
+  double largestSliceGap = 0.0;  // canonical units
+  double minGrowth = 0.0;
+};
+
+struct AnimationCallbacks {
+  std::function<void(const AnimationProgress&)> onProgress;
+  int progressEvery = 50;
+  std::function<void(const AnimationState&)> onCheckpoint;
+  int checkpointEvery = 0;       // 0: never
+};
+
+enum class AnimationStop { AllTouching, GrowthCap, Stalled, IterationCap };
+const char* toString(AnimationStop reason);
+
+struct AnimatedElement {
+  std::string id;                // the script element it copies
+  std::string source;            // its SVG
+  int copy = 0;                  // which of the script element's `count` copies
+  bool guided = false;
+  ElementMesh mesh;              // slice mesh with the art's barycentric bindings
+  std::vector<Shape> art;        // the art the bindings replay (paint kept)
+  double restSkinArea = 0.0;     // canonical units², at growth 1
+  std::vector<double> sliceTimes;            // t ∈ [0, 1] of each slice
+  std::vector<std::vector<Vec2>> slices;     // each slice's mesh vertices, input coordinates
+  std::vector<double> sliceGrowth;           // g of each slice
+};
+
+struct AnimatedPacking {
+  std::vector<AnimatedElement> elements;
+  Region container;              // input coordinates
+  double canonicalScale = 1.0;   // canonical units per input unit
+  int iterations = 0;
+  AnimationStop stopReason = AnimationStop::IterationCap;
+  double fill = 0.0;             // mean skin fill over slices at the end
+  int overlappingSlices = 0;     // slices overlapping another element at the end
+  std::size_t vertices = 0, springs = 0, envelopeTriangles = 0;
+  int slices = 0;
+  double seconds = 0.0;          // set up and simulation
+  double setupSeconds = 0.0;
+  int threads = 1;
+  std::uint64_t seed = 1;
+};
+
+AnimatedPacking packAnimation(const Scene& scene, const Library& library, const AnimationScript& script,
+                              const AnimationOptions& options = {}, const AnimationCallbacks& callbacks = {},
+                              const AnimationState* resumeFrom = nullptr);
+
+// The packing at time t ∈ [0, 1]: each element's mesh interpolated between the two slices
+// around t and its art replayed on it (thesis 5.6). A static Packing, so every RepulsionPak
+// output (SVG, PNG, verifyPacking, metrics) works on a frame.
+Packing animationFrame(const AnimatedPacking& animation, double t);
+
+}  // namespace pak

@@ -1,0 +1,21 @@
+#pragma once
+// Fitting a polyline with a chain of cubic Bézier curves (Schneider's algorithm [Sch90]),
+// and flattening them back.
+#include <array>
+#include <vector>
+
+#include "pak/geom/polygon.hpp"
+
+namespace pak {
+
+using CubicBezier = std::array<Vec2, 4>;
+
+// Curves joined end to end, from the line's first point to its last; every input point is
+// within `tolerance` of the chain. Corners sharper than `cornerAngle` (radians) are kept.
+std::vector<CubicBezier> fitCubicBeziers(const Polyline& line, double tolerance, double cornerAngle = 1.0);
+// Closed rings: the chain starts and ends at the ring's first vertex.
+std::vector<CubicBezier> fitCubicBeziersClosed(const Ring& ring, double tolerance, double cornerAngle = 1.0);
+// Points along the chain, at most `tolerance` from the curves (first and last points kept).
+Polyline flatten(const std::vector<CubicBezier>& curves, double tolerance);
+
+}  // namespace pak

@@ -1,0 +1,38 @@
+#pragma once
+// Invariant checkers shipped with the library and called by the tests.
+#include <string>
+#include <vector>
+
+#include "pak/geom/polygon.hpp"
+#include "pak/geom/tri_mesh.hpp"
+
+namespace pak {
+
+struct MeshCheck {
+  bool ok = true;
+  std::vector<std::string> problems;  // e.g. "triangle 12 is inverted (area -0.3)"
+};
+
+// Valid indices, no repeated index within a triangle, no inverted or zero-area triangles
+// (area <= minArea), no non-finite coordinates.
+MeshCheck verifyMesh(const TriMesh& mesh, double minArea = 1e-12);
+
+struct PackingCheck {
+  bool ok = true;
+  int overlappingPairs = 0;   // pairs overlapping by more than the tolerance
+  double overlapArea = 0.0;   // total pairwise overlap area
+  int elementsOutside = 0;    // elements with more than the tolerance outside the container
+  double outsideArea = 0.0;
+  std::vector<std::string> problems;
+};
+
+struct PackingCheckOptions {
+  // An overlap or an excursion outside the container counts only above this area.
+  double areaTolerance = 1e-6;
+};
+
+// No two elements overlap and every element lies inside the container (and out of its holes).
+PackingCheck verifyPacking(const std::vector<Region>& elements, const Region& container,
+                           const PackingCheckOptions& options = {});
+
+}  // namespace pak

@@ -1,0 +1,17 @@
+#pragma once
+// The output layout every packer shares: <g id="container">, <g id="fixed"> when present,
+// <g id="elements"> with one <g class="element" data-source="…"> per placed element, and the
+// debug layers <g id="skins">, <g id="meshes"> on request.
+#include "pak/geom/scene.hpp"
+#include "pak/io/drawing.hpp"
+#include "pak/repulsion/repulsion.hpp"
+
+namespace pak {
+
+struct PackingDrawingOptions {
+  bool debugLayers = false;
+};
+
+Drawing packingDrawing(const Scene& scene, const Packing& packing, const PackingDrawingOptions& options = {});
+
+}  // namespace pak

@@ -1,0 +1,151 @@
+#pragma once
+// The AnimationPak simulation (thesis 5.5): spacetime elements — stacks of mesh slices joined
+// by time springs — repel, deform and grow in (x, y, t) inside the container extruded along t.
+// It is RepulsionPak's mass-spring scheme in one more dimension: the same force laws
+// (pak/forces.hpp), the same explicit Euler step with a velocity cap, forces from a frozen
+// snapshot in parallel (results do not depend on the thread count), and no allocation inside
+// `step`. What is new: envelope triangles in a 3D grid for the neighbour queries (5.5.1), the
+// temporal force, target-point springs, the slice constraints (5.5.2) and per-slice growth (5.5.3).
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "pak/animation/spacetime_parameters.hpp"
+#include "pak/geom/vec3.hpp"
+#include "pak/sim/element_mesh.hpp"
+#include "sim/parallel.hpp"
+#include "sim/region_index.hpp"
+
+namespace pak {
+
+// One spacetime element as the simulation receives it. `reference` holds, slice-major, every
+// slice's vertex positions at growth 1 (animated, rotated and moved: the "reference element"
+// of thesis 5.5.3); growth g scales a slice's reference about `referenceCentre[slice]`.
+struct SpacetimeElementSetup {
+  const ElementMesh* mesh = nullptr;    // the slice mesh (triangles, springs, skin ring)
+  std::vector<Vec2> reference;          // slices × mesh vertices
+  std::vector<Vec2> referenceCentre;    // one per slice
+  double initialGrowth = 0.1;
+  double torsionStrength = 0.0;         // > 0: slices keep the reference's orientation (k_tor)
+  struct Target { int slice; int vertex; Vec2 position; };
+  std::vector<Target> targets;          // target-point springs (guided elements, 5.4)
+};
+
+class SpacetimeSimulation {
+ public:
+  SpacetimeSimulation(const RegionIndex& container, double containerArea, int slices,
+                      const SpacetimeParameters& parameters, ThreadPool& pool);
+
+  int addElement(const SpacetimeElementSetup& setup);
+  // Loop constraint (5.5.2): `from`'s last slice joins `to`'s first slice (same mesh). The
+  // thesis moves corresponding vertices to their mean; here the slices must agree up to the
+  // scripted turn and scale between them, `turn` = (s cos θ, s sin θ) (see loopTurn), so a star
+  // that turns by 72° over the loop is joined to itself without being squeezed. With no turn,
+  // (1, 0), this is the thesis's rule exactly.
+  void addLoop(int from, int to, Vec2 turn);
+  // The similarity (s cos θ, s sin θ) that best maps the centred points `first` onto `last`.
+  static Vec2 loopTurn(const Vec2* first, const Vec2* last, int count);
+  // Moves every vertex left outside the container onto its boundary, a hair inside (the
+  // boundary force is a penalty, so pressed vertices rest slightly outside). Returns how many.
+  int projectInside();
+  // Builds the spring tables, the envelope and the grid over `area` (canonical x, y).
+  void finalize(const Box& area);
+
+  void step();
+
+  // --- state (what a checkpoint saves; everything else is rebuilt from the inputs)
+  int iteration() const { return iteration_; }
+  const std::vector<Vec3>& positions() const { return position_; }
+  const std::vector<Vec3>& velocities() const { return velocity_; }
+  const std::vector<double>& growth() const { return growth_; }  // per slice
+  void restoreState(int iteration, std::vector<Vec3> positions, std::vector<Vec3> velocities, std::vector<double> growth);
+
+  // --- layout and measurements
+  int slices() const { return slices_; }
+  int elementCount() const { return static_cast<int>(elements_.size()); }
+  int vertexBegin(int element) const { return elements_[element].vertexBegin; }
+  int verticesPerSlice(int element) const { return elements_[element].verticesPerSlice; }
+  std::size_t vertexCount() const { return position_.size(); }
+  std::size_t springCount() const { return springOther_.size() / 2; }
+  std::size_t envelopeTriangleCount() const { return envelope_.size(); }
+  // Mean over slices of the skins' area over the container area.
+  double fill() const { return fill_; }
+  // Slices still allowed to grow, and slices overlapping another element after the last step.
+  int growingSlices() const { return growingSlices_; }
+  int overlappingSlices() const { return overlappingSlices_; }
+  // Largest over slices of the slice's distance to its nearest neighbour or wall (5.5.3).
+  double largestSliceGap() const { return largestSliceGap_; }
+  double minGrowth() const;
+  bool sliceOverlapping(int globalSlice) const { return sliceOverlapping_[globalSlice] != 0; }
+
+ private:
+  struct ElementRecord {
+    const ElementMesh* mesh;
+    int vertexBegin, verticesPerSlice, sliceBegin;
+    double torsionStrength;
+  };
+  struct EnvelopeGroup { int element, begin, end; Vec3 centre; double radius; };
+  struct Hit { int element; double d2; Vec3 point; bool exact; };
+  static constexpr int kMaxHits = 16;
+
+  void computeReferencePoints(std::size_t begin, std::size_t end);
+  void buildGrid();
+  int gatherHits(int v, Hit* hits) const;
+  bool insideElementAt(int element, Vec3 x) const;
+  void computeForces(std::size_t begin, std::size_t end);
+  void integrate(std::size_t begin, std::size_t end);
+  void applySliceConstraints(std::size_t elementBegin, std::size_t elementEnd);
+  void applyLoopConstraints();
+  void updateSlices(std::size_t begin, std::size_t end);
+  void computeSliceCentres();
+  std::array<int, 3> cellOf(Vec3 p) const;
+
+  const RegionIndex& container_;
+  double containerArea_;
+  int slices_;
+  SpacetimeParameters parameters_;
+  ThreadPool& pool_;
+  int iteration_ = 0;
+  double fill_ = 0.0, largestSliceGap_ = 0.0;
+  int growingSlices_ = 0, overlappingSlices_ = 0;
+
+  std::vector<ElementRecord> elements_;
+  // Per vertex.
+  std::vector<Vec3> position_, velocity_, force_, referencePoint_;
+  std::vector<Vec2> reference_;            // at growth 1
+  std::vector<int> sliceOf_;               // global slice index
+  std::vector<std::uint8_t> isBoundary_, insideOther_, outside_;
+  std::vector<double> nearestGap_;         // distance to the nearest other element or wall
+  std::vector<Vec2> targetPull_;           // target-point spring anchor, per vertex (NaN: none)
+  // Springs (CSR per vertex; each spring appears at both ends).
+  std::vector<int> springStart_, springOther_;
+  std::vector<double> springStiffness_;
+  // Incident in-slice triangles (CSR per vertex), for the overlap force.
+  std::vector<int> triangleStart_;
+  std::vector<std::array<int, 3>> incidentTriangle_;
+  // Per global slice.
+  std::vector<int> sliceElement_, sliceVertexBegin_;
+  std::vector<double> growth_, previousGrowth_, sliceTime_, restTime_;
+  std::vector<Vec2> referenceCentre_, sliceCentre_;
+  std::vector<std::uint8_t> sliceOverlapping_, sliceOutside_;
+  std::vector<double> sliceGap_, sliceArea_;
+  // Envelope triangles (5.5.1) and the collision grid of their centroids, grouped per cell
+  // and element so a far element is skipped in one test and the outer shell uses one point.
+  std::vector<std::array<int, 3>> envelope_;
+  std::vector<int> envelopeElement_;
+  std::vector<Vec3> envelopeCentroid_;
+  std::vector<double> envelopeRadius_;
+  std::vector<int> envelopeCell_, cellCount_, cellTriangles_, cellGroupStart_;
+  std::vector<EnvelopeGroup> groups_;
+  Vec3 gridOrigin_;
+  int nx_ = 0, ny_ = 0, nt_ = 0;
+  // Loops.
+  struct Loop { int from, to; Vec2 turn; };
+  std::vector<Loop> loops_;
+  // Build-time only.
+  struct PendingSpring { int a, b; double stiffness; };
+  std::vector<PendingSpring> pending_;
+  std::vector<SpacetimeElementSetup::Target> pendingTargets_;
+};
+
+}  // namespace pak

@@ -1,0 +1,43 @@
+#pragma once
+// Fast, exact "is this point inside the region, and where is the nearest boundary point?"
+// for a static region (a container, or fixed obstacles). Cells that no boundary segment
+// touches answer inside/outside from a precomputed flag; the rest search outward ring by ring.
+#include <cstdint>
+#include <vector>
+
+#include "pak/geom/polygon.hpp"
+
+namespace pak {
+
+class RegionIndex {
+ public:
+  RegionIndex() = default;
+  // `cellSize` about the length of a few boundary segments works well.
+  RegionIndex(const Region& region, double cellSize);
+
+  struct Query {
+    bool inside = false;
+    Vec2 closest;          // nearest boundary point (valid when `computed`)
+    double distance = 0.0; // to `closest`
+    bool computed = false;
+  };
+  // Inside test; the nearest boundary point is computed only when needed: always if
+  // `wantClosest`, else only for points in cells the boundary crosses.
+  Query query(Vec2 p, bool wantClosest) const;
+  bool empty() const { return segments_.empty(); }
+
+ private:
+  struct Segment { Vec2 a, b; Vec2 normal; Vec2 normalA, normalB; };  // outward normals
+  Query closestAround(Vec2 p) const;
+  int cellIndex(int i, int j) const { return j * nx_ + i; }
+
+  std::vector<Segment> segments_;
+  Vec2 origin_;
+  double cell_ = 1.0;
+  int nx_ = 0, ny_ = 0;
+  std::vector<int> cellStart_, entries_;
+  enum : std::uint8_t { kOutside = 0, kInside = 1, kCrossed = 2 };
+  std::vector<std::uint8_t> cellState_;
+};
+
+}  // namespace pak

@@ -1,0 +1,140 @@
+#include "pak/sim/element_mesh.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+
+#include "pak/geom/verify.hpp"
+#include "pak/io/scene_loader.hpp"
+#include "repulsion/mesh_fixtures.hpp"
+
+using namespace pak;
+
+namespace {
+
+Shape filledShape(Ring ring) {
+  Shape s;
+  s.subpaths.push_back({std::move(ring), true});
+  s.fill = Color{200, 40, 40, 1.0};
+  return s;
+}
+
+int countKind(const ElementMesh& m, SpringKind kind) {
+  int n = 0;
+  for (const Spring& s : m.springs) n += s.kind == kind ? 1 : 0;
+  return n;
+}
+
+}  // namespace
+
+TEST(ElementMesh, SquareSkinMeshAndSprings) {
+  Ring square = {{-50, -50}, {50, -50}, {50, 50}, {-50, 50}};
+  ElementMeshOptions options;
+  options.gap = 10.0;
+  options.spacing = 10.0;
+  ElementMesh m = buildElementMesh({filledShape(square)}, Region{Polygon{square, {}}}, options);
+  MeshCheck check = verifyMesh(m.mesh);
+  EXPECT_TRUE(check.ok) << (check.problems.empty() ? "" : check.problems.front());
+  // Skin: the square offset by 5 with round corners, perimeter 400 + 10π ≈ 431.4.
+  EXPECT_NEAR(m.boundaryCount, 43, 2);
+  double skinArea = 110.0 * 110.0 - (4.0 - std::numbers::pi) * 25.0;
+  EXPECT_NEAR(m.skinArea, skinArea, 0.02 * skinArea);
+  EXPECT_DOUBLE_EQ(m.artArea, 10000.0);
+  EXPECT_GT(m.mesh.vertices.size(), static_cast<std::size_t>(m.boundaryCount));  // interior points
+  EXPECT_GT(countKind(m, SpringKind::Shear), 0);
+  for (const Spring& s : m.springs) EXPECT_GT(s.restLength, 0.0);
+  // Boundary ring first, positively oriented.
+  Ring ring(m.mesh.vertices.begin(), m.mesh.vertices.begin() + m.boundaryCount);
+  EXPECT_GT(signedArea(ring), 0.0);
+}
+
+TEST(ElementMesh, ConcaveElementGetsNegativeSpaceSprings) {
+  // A U shape: its notch is inside the convex hull.
+  Ring u = {{0, 0}, {100, 0}, {100, 100}, {70, 100}, {70, 30}, {30, 30}, {30, 100}, {0, 100}};
+  ElementMeshOptions options;
+  options.gap = 6.0;
+  options.spacing = 8.0;
+  ElementMesh m = buildElementMesh({filledShape(u)}, Region{Polygon{u, {}}}, options);
+  EXPECT_TRUE(verifyMesh(m.mesh).ok);
+  EXPECT_GT(countKind(m, SpringKind::NegativeSpace), 0);
+  // No mesh triangle covers the notch.
+  for (const auto& t : m.mesh.triangles) {
+    Vec2 c = (m.mesh.vertices[t[0]] + m.mesh.vertices[t[1]] + m.mesh.vertices[t[2]]) / 3.0;
+    EXPECT_FALSE(c.x > 40 && c.x < 60 && c.y > 45) << c.x << "," << c.y;
+  }
+}
+
+TEST(ElementMesh, ReplayReproducesArtAndFollowsRigidMotion) {
+  Ring leaf = {{0, 0}, {40, -20}, {80, 0}, {40, 20}};
+  Shape art = filledShape(leaf);
+  ElementMeshOptions options;
+  options.gap = 4.0;
+  options.spacing = 6.0;
+  ElementMesh m = buildElementMesh({art}, Region{Polygon{leaf, {}}}, options);
+  std::vector<Vec2> out;
+  replayArt(m, m.mesh.vertices.data(), out);
+  ASSERT_EQ(out.size(), leaf.size());
+  for (std::size_t i = 0; i < leaf.size(); ++i) {
+    EXPECT_NEAR(out[i].x, leaf[i].x, 1e-9);
+    EXPECT_NEAR(out[i].y, leaf[i].y, 1e-9);
+  }
+  // Rotate by 90° and translate: the art moves rigidly with the mesh.
+  std::vector<Vec2> moved;
+  for (Vec2 v : m.mesh.vertices) moved.push_back(rotated(v, std::numbers::pi / 2) + Vec2{5, 7});
+  replayArt(m, moved.data(), out);
+  for (std::size_t i = 0; i < leaf.size(); ++i) {
+    Vec2 expected = rotated(leaf[i], std::numbers::pi / 2) + Vec2{5, 7};
+    EXPECT_NEAR(out[i].x, expected.x, 1e-9);
+    EXPECT_NEAR(out[i].y, expected.y, 1e-9);
+  }
+}
+
+TEST(ElementMesh, SeparatePiecesBecomeOneSkin) {
+  Ring a = {{0, 0}, {20, 0}, {20, 20}, {0, 20}};
+  Ring b = {{30, 0}, {50, 0}, {50, 20}, {30, 20}};
+  Polygon skin = elementSkin(Region{Polygon{a, {}}, Polygon{b, {}}}, 4.0, 0.25);
+  EXPECT_GE(skin.outer.size(), 4u);
+  EXPECT_TRUE(pointInPolygon({10, 10}, skin));
+  EXPECT_TRUE(pointInPolygon({40, 10}, skin));
+  EXPECT_TRUE(skin.holes.empty());
+}
+
+namespace {
+
+// Meshes every element of a library at a typical packing size (skin area about 20,000 in
+// canonical units, as for 30 elements in a 1000-wide container) and checks the invariants.
+void expectEveryElementMeshes(const Library& library) {
+  ASSERT_FALSE(library.empty());
+  for (const ElementArt& e : library) {
+    double scale = std::sqrt(15000.0 / area(e.outline));
+    ElementMesh m = test::centredElementMesh(e, scale, 10.0, 14.0);
+    MeshCheck check = verifyMesh(m.mesh);
+    EXPECT_TRUE(check.ok) << e.source << ": " << (check.problems.empty() ? "" : check.problems.front());
+    EXPECT_GE(m.boundaryCount, 3) << e.source;
+    EXPECT_GT(m.skinArea, m.artArea) << e.source;  // the skin encloses the art plus a margin
+    EXPECT_EQ(m.bindings.size(), [&] {
+      std::size_t n = 0;
+      for (const Shape& s : e.shapes)
+        for (const Subpath& sub : s.subpaths) n += sub.points.size();
+      return n;
+    }()) << e.source;
+  }
+}
+
+}  // namespace
+
+TEST(ElementMesh, EveryBundledExampleElementMeshes) {
+  expectEveryElementMeshes(loadLibrary({std::string(PAK_SOURCE_DIR) + "/examples/elements"}));
+}
+
+TEST(ElementMesh, EverySharedDataElementMeshes) {
+  const std::string data = PAK_SHARED_DATA_DIR;
+  if (!std::filesystem::exists(data)) GTEST_SKIP() << "shared data not found at " << data;
+  expectEveryElementMeshes(loadLibrary({data + "/repulsionpak/animals", data + "/repulsionpak/small_cat"}));
+  Library mdi;
+  for (const auto& entry : std::filesystem::directory_iterator(data + "/mdi"))
+    if (entry.path().extension() == ".svg") mdi.push_back(loadLibrary({entry.path().string()}).front());
+  expectEveryElementMeshes(mdi);
+}
