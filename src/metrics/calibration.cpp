@@ -21,6 +21,7 @@ Calibration calibrateNegativeSpace(const PackingGeometry& packing, double target
   Calibration result;
   result.calibrated.source = packing.source;
   result.calibrated.container = packing.container;
+  result.calibrated.fixed = packing.fixed;  // fixed art is not part of the packing's deformation
   auto apply = [&](double d) {
     result.offset = d;
     result.calibrated.elements.clear();

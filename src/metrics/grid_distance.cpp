@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "metrics/cell_raster.hpp"
 #include "metrics/metrics_internal.hpp"
 #include "pak/error.hpp"
 #include "pak/geom/distance_field.hpp"
@@ -11,40 +12,9 @@
 namespace pak::metrics_internal {
 namespace {
 
-// Even-odd scanline fill of cell centres: Clipper's regions are disjoint polygons with holes,
-// so parity over all rings is membership.
 std::vector<std::uint8_t> rasterize(const Region& region, Vec2 origin, double cell, int n) {
   std::vector<std::uint8_t> inside(static_cast<std::size_t>(n) * n, 0);
-  std::vector<std::vector<double>> crossings(n);
-  auto addRing = [&](const Ring& ring) {
-    for (std::size_t k = 0; k < ring.size(); ++k) {
-      const Vec2 a = ring[k], b = ring[(k + 1) % ring.size()];
-      if (a.y == b.y) continue;
-      const double lo = std::min(a.y, b.y), hi = std::max(a.y, b.y);
-      // Rows whose centre y is in [lo, hi): half-open so shared vertices count once.
-      int j0 = std::max(0, static_cast<int>(std::ceil((lo - origin.y) / cell - 0.5)));
-      for (int j = j0; j < n; ++j) {
-        const double y = origin.y + (j + 0.5) * cell;
-        if (y >= hi) break;
-        if (y < lo) continue;
-        crossings[j].push_back(a.x + (y - a.y) / (b.y - a.y) * (b.x - a.x));
-      }
-    }
-  };
-  for (const Polygon& p : region) {
-    addRing(p.outer);
-    for (const Ring& h : p.holes) addRing(h);
-  }
-  for (int j = 0; j < n; ++j) {
-    std::vector<double>& xs = crossings[j];
-    std::sort(xs.begin(), xs.end());
-    for (std::size_t k = 0; k + 1 < xs.size(); k += 2) {
-      // Cells whose centre x is in [xs[k], xs[k+1]).
-      const int i0 = std::max(0, static_cast<int>(std::ceil((xs[k] - origin.x) / cell - 0.5)));
-      const int i1 = std::min(n, static_cast<int>(std::ceil((xs[k + 1] - origin.x) / cell - 0.5)));
-      for (int i = i0; i < i1; ++i) inside[static_cast<std::size_t>(j) * n + i] = 1;
-    }
-  }
+  paintRegion(region, CellGrid{origin, cell, n}, inside);
   return inside;
 }
 

@@ -18,6 +18,9 @@ struct PackingGeometry {
   std::string source;
   Region container;
   std::vector<Region> elements;
+  // What the fixed elements paint. Positive space for the evenness measure (evenness.hpp);
+  // the chapter-6 measures here look at `elements` only.
+  Region fixed;
 };
 
 struct MetricsOptions {
