@@ -1,5 +1,6 @@
-// `pak metrics PACKING.svg…`: how even the negative space of packings is (thesis chapter 6):
-// a table on stdout, every curve as CSV/JSON, a comparison figure and offset images.
+// `pak metrics PACKING.svg…`: how even the negative space of packings is (thesis chapter 6,
+// and the evenness measure of the RepulsionPak quality issue): tables on stdout, every curve
+// and figure as CSV/JSON, a comparison figure, offset and distance images.
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -9,6 +10,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -18,9 +20,11 @@
 #include "pak/geom/clipping.hpp"
 #include "pak/io/atomic_file.hpp"
 #include "pak/io/distance_map_image.hpp"
+#include "pak/io/evenness_map_image.hpp"
 #include "pak/io/metrics_plot.hpp"
 #include "pak/io/offset_visualization.hpp"
 #include "pak/io/packing_reader.hpp"
+#include "pak/metrics/evenness.hpp"
 #include "pak/metrics/metrics.hpp"
 
 namespace pak::cli {
@@ -39,6 +43,13 @@ struct MetricsArgs {
   std::optional<double> visualize;
   std::string visualizeOut;
   std::string distanceMap;
+  std::string evennessMap;
+};
+
+// One packing's chapter-6 metrics and its evenness, measured on the same geometry.
+struct Measured {
+  PackingMetrics metrics;
+  Evenness evenness;
 };
 
 std::string extensionOf(const std::string& path) {
@@ -85,7 +96,23 @@ std::string general(double value) {
 
 json curveJson(const Curve& curve) { return {{"r", curve.r}, {"value", curve.value}}; }
 
-json packingJson(const PackingMetrics& m, const std::optional<double>& offset) {
+json evennessJson(const Evenness& e) {
+  return {{"resolution", e.resolution},
+          {"cell", e.cell},
+          {"negative-ratio", e.negativeRatio},
+          {"h", e.halfWidth},
+          {"P1", e.pocketShare[0]},
+          {"P2", e.pocketShare[1]},
+          {"P3", e.pocketShare[2]},
+          {"largest-empty-radius", e.largestEmptyRadius},
+          {"largest-radius-over-h", e.largestRadiusOverHalfWidth},
+          {"width-spread", e.widthSpread},
+          {"axis-length", e.axisLength},
+          {"filled-hole-ratio", e.containerCells > 0 ? static_cast<double>(e.filledHoleCells) / e.containerCells : 0.0}};
+}
+
+json packingJson(const Measured& measured, const std::optional<double>& offset) {
+  const PackingMetrics& m = measured.metrics;
   json out = {{"file", m.source},
               {"elements", m.elementCount},
               {"container-area", m.containerArea},
@@ -103,11 +130,13 @@ json packingJson(const PackingMetrics& m, const std::optional<double>& offset) {
                 {"Q-grid", curveJson(m.gridSphericalContact)}}},
               {"histogram", {{"edges", m.binEdges}, {"density", m.binDensity}}}};
   out["calibration-offset"] = offset ? json(*offset) : json(nullptr);
+  out["evenness"] = evennessJson(measured.evenness);
   return out;
 }
 
-// Long format: one row per sample, so any tool can pivot it.
-std::string csvText(const std::vector<PackingMetrics>& all) {
+// Long format: one row per sample, so any tool can pivot it. The evenness adds the curve P
+// (r = k, value P_k) and rows of single figures with an empty r.
+std::string csvText(const std::vector<Measured>& all) {
   std::ostringstream out;
   out.precision(10);
   out << "file,curve,r,value\n";
@@ -116,7 +145,8 @@ std::string csvText(const std::vector<PackingMetrics>& all) {
     for (char c : text) q += c == '"' ? std::string("\"\"") : std::string(1, c);
     return q + "\"";
   };
-  for (const PackingMetrics& m : all) {
+  for (const Measured& measured : all) {
+    const PackingMetrics& m = measured.metrics;
     auto rows = [&](const char* name, const Curve& curve) {
       for (std::size_t i = 0; i < curve.r.size() && i < curve.value.size(); ++i)
         out << quoted(m.source) << "," << name << "," << curve.r[i] << "," << curve.value[i] << "\n";
@@ -128,11 +158,37 @@ std::string csvText(const std::vector<PackingMetrics>& all) {
     // Histogram bins by their left edge.
     for (std::size_t i = 0; i + 1 < m.binEdges.size() && i < m.binDensity.size(); ++i)
       out << quoted(m.source) << ",histogram," << m.binEdges[i] << "," << m.binDensity[i] << "\n";
+    const Evenness& e = measured.evenness;
+    for (int k = 1; k <= 3; ++k) out << quoted(m.source) << ",P," << k << "," << e.pocketShare[k - 1] << "\n";
+    const std::pair<const char*, double> figures[] = {{"evenness-negative-ratio", e.negativeRatio},
+                                                      {"evenness-h", e.halfWidth},
+                                                      {"evenness-largest-radius-over-h", e.largestRadiusOverHalfWidth},
+                                                      {"evenness-width-spread", e.widthSpread}};
+    for (const auto& [name, value] : figures) out << quoted(m.source) << "," << name << ",," << value << "\n";
   }
   return out.str();
 }
 
-std::string tableText(const std::vector<PackingMetrics>& all, const std::vector<std::optional<double>>& offsets,
+// Columns padded to their widest cell: file names left-aligned, numbers right-aligned.
+std::string alignedRows(const std::vector<std::vector<std::string>>& rows) {
+  std::vector<std::size_t> widths;
+  for (const auto& row : rows) {
+    widths.resize(std::max(widths.size(), row.size()), 0);
+    for (std::size_t c = 0; c < row.size(); ++c) widths[c] = std::max(widths[c], row[c].size());
+  }
+  std::ostringstream out;
+  for (const auto& row : rows) {
+    for (std::size_t c = 0; c < row.size(); ++c) {
+      const std::string& cell = row[c];
+      std::string pad(widths[c] - cell.size(), ' ');
+      out << (c ? "  " : "") << (c == 0 ? cell + (c + 1 < row.size() ? pad : "") : pad + cell);
+    }
+    out << "\n";
+  }
+  return out.str();
+}
+
+std::string tableText(const std::vector<Measured>& all, const std::vector<std::optional<double>>& offsets,
                       bool calibrated) {
   std::vector<std::vector<std::string>> rows;
   std::vector<std::string> header = {"file", "elements", "positive", "negative", "d_gap", "Q(d_gap/2)", "O(d_gap/2)",
@@ -140,7 +196,7 @@ std::string tableText(const std::vector<PackingMetrics>& all, const std::vector<
   if (calibrated) header.push_back("offset");
   rows.push_back(header);
   for (std::size_t i = 0; i < all.size(); ++i) {
-    const PackingMetrics& m = all[i];
+    const PackingMetrics& m = all[i].metrics;
     std::vector<std::string> row = {m.source,
                                     std::to_string(m.elementCount),
                                     fixed(100.0 * m.positiveRatio, 2) + "%",
@@ -152,20 +208,23 @@ std::string tableText(const std::vector<PackingMetrics>& all, const std::vector<
     if (calibrated) row.push_back(offsets[i] ? general(*offsets[i]) : "-");
     rows.push_back(row);
   }
-  std::vector<std::size_t> widths(header.size(), 0);
-  for (const auto& row : rows)
-    for (std::size_t c = 0; c < row.size(); ++c) widths[c] = std::max(widths[c], row[c].size());
-  std::ostringstream out;
-  for (const auto& row : rows) {
-    for (std::size_t c = 0; c < row.size(); ++c) {
-      // File names left-aligned, numbers right-aligned.
-      std::string cell = row[c];
-      std::string pad(widths[c] - cell.size(), ' ');
-      out << (c ? "  " : "") << (c == 0 ? cell + (c + 1 < row.size() ? pad : "") : pad + cell);
-    }
-    out << "\n";
+  return alignedRows(rows);
+}
+
+// The evenness measure's own table: its negative space is the grid's, with small holes filled
+// and fixed art counted as positive, so it may differ from the exact one above.
+std::string evennessTableText(const std::vector<Measured>& all) {
+  std::vector<std::vector<std::string>> rows = {
+      {"file", "negative", "h", "P1 (D>h)", "P2 (D>2h)", "P3 (D>3h)", "largest r/h", "width spread"}};
+  for (const Measured& measured : all) {
+    const Evenness& e = measured.evenness;
+    rows.push_back({measured.metrics.source, fixed(100.0 * e.negativeRatio, 2) + "%", general(e.halfWidth),
+                    fixed(e.pocketShare[0], 4), fixed(e.pocketShare[1], 4), fixed(e.pocketShare[2], 4),
+                    fixed(e.largestRadiusOverHalfWidth, 2), fixed(e.widthSpread, 3)});
   }
-  return out.str();
+  const int resolution = all.empty() ? 0 : all.front().evenness.resolution;
+  return "\nEvenness on a " + std::to_string(resolution) + "-cell grid (h: median distance to the nearest element "
+         "or wall along the medial axis of the negative space):\n" + alignedRows(rows);
 }
 
 // Several packings share one --visualize-out name: number them before the extension.
@@ -188,6 +247,8 @@ int runMetrics(MetricsArgs args) {
     throw InputError(args.visualizeOut, "--visualize-out must be a .png file");
   if (!args.distanceMap.empty() && extensionOf(args.distanceMap) != ".png")
     throw InputError(args.distanceMap, "--distance-map must be a .png file");
+  if (!args.evennessMap.empty() && extensionOf(args.evennessMap) != ".png")
+    throw InputError(args.evennessMap, "--evenness-map must be a .png file");
 
   if (args.gap) args.metrics.gap = *args.gap;
   else if (!args.report.empty()) args.metrics.gap = gapFromReport(args.report);
@@ -208,8 +269,11 @@ int runMetrics(MetricsArgs args) {
     }
   }
 
-  std::vector<PackingMetrics> measured;
-  for (const PackingGeometry& p : packings) measured.push_back(measurePacking(p, args.metrics));
+  // --grid is the evenness grid too: both rasterize the container's bounding square.
+  EvennessOptions evenness;
+  evenness.resolution = args.metrics.gridResolution;
+  std::vector<Measured> measured;
+  for (const PackingGeometry& p : packings) measured.push_back({measurePacking(p, args.metrics), measureEvenness(p, evenness)});
 
   if (!args.csv.empty()) writeFileAtomically(args.csv, csvText(measured));
   if (!args.json.empty()) {
@@ -217,7 +281,11 @@ int runMetrics(MetricsArgs args) {
     for (std::size_t i = 0; i < measured.size(); ++i) list.push_back(packingJson(measured[i], offsets[i]));
     writeFileAtomically(args.json, json{{"packings", list}}.dump(2) + "\n");
   }
-  if (!args.plot.empty()) writeMetricsPlot(measured, args.plot);
+  if (!args.plot.empty()) {
+    std::vector<PackingMetrics> curves;
+    for (const Measured& m : measured) curves.push_back(m.metrics);
+    writeMetricsPlot(curves, args.plot);
+  }
   if (args.visualize)
     for (std::size_t i = 0; i < packings.size(); ++i)
       writeOffsetVisualization(packings[i], *args.visualize, visualizationPath(args.visualizeOut, i, packings.size()));
@@ -225,8 +293,11 @@ int runMetrics(MetricsArgs args) {
     for (std::size_t i = 0; i < packings.size(); ++i)
       writeDistanceMapImage(packings[i], visualizationPath(args.distanceMap, i, packings.size()),
                             args.metrics.gridResolution);
+  if (!args.evennessMap.empty())
+    for (std::size_t i = 0; i < packings.size(); ++i)
+      writeEvennessMapImage(packings[i], visualizationPath(args.evennessMap, i, packings.size()), evenness);
 
-  std::cout << tableText(measured, offsets, args.calibrate) << std::flush;
+  std::cout << tableText(measured, offsets, args.calibrate) << evennessTableText(measured) << std::flush;
   return 0;
 }
 
@@ -237,8 +308,11 @@ const CommandRegistrar registrar{Command{
           "metrics",
           "Measure how even the negative space of packings is (thesis chapter 6): positive/negative "
           "space ratios, the spherical contact probability Q(r), the distance histogram H(r) = -Q'(r), "
-          "the overlap function O(r), and Q and O at d_gap/2. Reads Pak's output (layers `container` "
-          "and `elements`), other layer names, or else takes the largest closed shape as the container "
+          "the overlap function O(r), and Q and O at d_gap/2; and the evenness measure: h, the median distance "
+          "to the nearest element or wall along the medial axis of the negative space, and the pocket shares "
+          "P_k, the fraction of the negative space farther than k h from everything (docs/metrics.md). Reads "
+          "Pak's output (layers `container`, `elements` and `fixed`), other layer names, or else takes the "
+          "largest closed shape as the container "
           "and each top-level group or shape as an element. Lengths are in the file's own units.");
       cmd->add_option("files", args->files, "Packing SVG files to measure and compare")->required()->type_name("PACKING");
       cmd->add_option("--gap", args->gap, "d_gap in the file's units (default: from --report, else estimated)")
@@ -249,7 +323,8 @@ const CommandRegistrar registrar{Command{
           ->type_name("FILE");
       cmd->add_option("--radii", args->metrics.radii, "samples of r for Q, H and O (default: 100)")->type_name("N");
       cmd->add_option("--grid", args->metrics.gridResolution,
-                      "distance-transform grid cells along the container's bounding square (default: 1000)")
+                      "distance-transform grid cells along the container's bounding square, for the histogram, "
+                      "the distance map and the evenness measure (default: 1000)")
           ->type_name("N");
       cmd->add_option("--bins", args->metrics.histogramBins, "bins of the discrete distance histogram (default: 50)")
           ->type_name("N");
@@ -265,6 +340,9 @@ const CommandRegistrar registrar{Command{
       cmd->add_option("--elements-layer", args->layers.elementsLayer,
                       "layer whose child groups are the elements (default: elements)")
           ->type_name("NAME");
+      cmd->add_option("--fixed-layer", args->layers.fixedLayer,
+                      "layer of fixed elements, positive space for the evenness measure (default: fixed)")
+          ->type_name("NAME");
       cmd->add_option("--csv", args->csv, "write every curve as CSV (file,curve,r,value)")->type_name("FILE");
       cmd->add_option("--json", args->json, "write every quantity and curve as JSON")->type_name("FILE");
       cmd->add_option("--plot", args->plot, "draw Q, H and O of all packings side by side (.png or .svg)")
@@ -278,6 +356,11 @@ const CommandRegistrar registrar{Command{
       cmd->add_option("--distance-map", args->distanceMap,
                       "draw the distance transform of the negative space, one pixel per grid cell, light = far "
                       "from any element (thesis Fig. 6.3b; numbered -1, -2 … for several packings)")
+          ->type_name("FILE.png");
+      cmd->add_option("--evenness-map", args->evennessMap,
+                      "draw the evenness measure, one pixel per grid cell: channels blue by distance, pockets "
+                      "D > 2h orange and D > 3h red, the medial axis white, filled small holes dark grey "
+                      "(numbered -1, -2 … for several packings)")
           ->type_name("FILE.png");
       return [args] { return runMetrics(*args); };
     }}};

@@ -65,16 +65,18 @@ std::vector<Region> outlinesByKey(const std::vector<const Shape*>& shapes, const
 namespace {
 
 // Pak's layout or named layers: the container layer minus any `holes` layer; one element per
-// child group of the elements layer (a shape directly in the layer is an element by itself).
+// child group of the elements layer (a shape directly in the layer is an element by itself);
+// the fixed layer's paint as the fixed art.
 PackingGeometry fromLayers(const SvgDocument& document, const PackingReadOptions& options, const ClipOptions& clip) {
   PackingGeometry packing;
   packing.source = document.file;
-  std::vector<Region> containerParts, holes;
+  std::vector<Region> containerParts, holes, fixed;
   std::vector<const Shape*> elementShapes;
   std::vector<int> keys;
   for (const Shape& shape : document.shapes) {
     if (shape.layer == options.containerLayer) containerParts.push_back(filledRegion(shape, clip));
     else if (shape.layer == "holes") holes.push_back(filledRegion(shape, clip));
+    else if (shape.layer == options.fixedLayer) fixed.push_back(paintedRegion(shape, clip));
     else if (shape.layer == options.elementsLayer) {
       elementShapes.push_back(&shape);
       keys.push_back(shape.layerGroup);
@@ -88,6 +90,7 @@ PackingGeometry fromLayers(const SvgDocument& document, const PackingReadOptions
     throw InputError(document.file, "no elements found: the file has no '" + options.elementsLayer +
                                         "' layer (name it with --elements-layer)");
   packing.elements = outlinesByKey(elementShapes, keys, clip);
+  if (!fixed.empty()) packing.fixed = unite(fixed, clip);
   return packing;
 }
 
@@ -130,7 +133,8 @@ PackingGeometry fromLargestShape(const SvgDocument& document, const ClipOptions&
 }  // namespace
 
 PackingGeometry packingFromDocument(const SvgDocument& document, const PackingReadOptions& rawOptions) {
-  PackingReadOptions options{lowerCased(rawOptions.containerLayer), lowerCased(rawOptions.elementsLayer)};
+  PackingReadOptions options{lowerCased(rawOptions.containerLayer), lowerCased(rawOptions.elementsLayer),
+                             lowerCased(rawOptions.fixedLayer)};
   if (document.shapes.empty()) throw InputError(document.file, "no usable shape in the packing");
   const Box box = document.viewBox.empty() ? bounds(document.shapes) : document.viewBox;
   const ClipOptions clip = clipFor(box);

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <sstream>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -58,7 +59,19 @@ TEST_F(CliMetrics, TableJsonCsvAndPlot) {
     EXPECT_GE(m["curves"][curve]["r"].size(), 2u) << curve;
   }
   EXPECT_NEAR(m["curves"]["Q"]["value"][0].get<double>(), m["negative-ratio"].get<double>(), 1e-6);
-  EXPECT_EQ(readWholeFile(file("m.csv")).rfind("file,curve,r,value\n", 0), 0u);
+  // The evenness measure, on the --grid grid.
+  EXPECT_NE(run.out.find("P2 (D>2h)"), std::string::npos) << run.out;
+  const json& e = m["evenness"];
+  EXPECT_EQ(e["resolution"], 200);
+  EXPECT_GT(e["h"].get<double>(), 0.0);
+  EXPECT_GE(e["P1"].get<double>(), e["P2"].get<double>());
+  EXPECT_GE(e["P2"].get<double>(), e["P3"].get<double>());
+  EXPECT_GE(e["largest-radius-over-h"].get<double>(), 1.0);
+  EXPECT_NEAR(e["negative-ratio"].get<double>(), m["negative-ratio"].get<double>(), 0.05);
+  const std::string csv = readWholeFile(file("m.csv"));
+  EXPECT_EQ(csv.rfind("file,curve,r,value\n", 0), 0u);
+  EXPECT_NE(csv.find(",P,2,"), std::string::npos);
+  EXPECT_NE(csv.find(",evenness-h,,"), std::string::npos);
   EXPECT_EQ(readWholeFile(file("plot.png")).rfind("\x89PNG", 0), 0u);
 }
 
@@ -93,6 +106,81 @@ TEST_F(CliMetrics, DistanceMapShadesFreeSpaceByDistance) {
   EXPECT_GT(brightness(30, 100), brightness(57, 100));
   EXPECT_GT(brightness(30, 100), brightness(2, 100));
   PakRun bad = runPak("metrics " + shellQuoted(path) + kFast + " --distance-map " + shellQuoted(file("dm.jpg")));
+  EXPECT_EQ(bad.exitCode, 2);
+  EXPECT_EQ(bad.errLines().size(), 1u) << bad.err;
+}
+
+// A 100 × 100 container with four 40 × 40 squares: channels of width 10 between them and
+// 5 to the walls (h = 2.5); a round hole of radius 15 in one square is a pocket (D up to 15 >
+// 3h), a 1.5 × 1.5 eye in another is filled (under 4e-4 of the square), and a fixed square
+// in the middle channel crossing is positive space.
+std::string fourSquares(double scale) {
+  std::ostringstream svg;
+  auto rect = [&](double x, double y, double w, double h) {
+    svg << "<rect x='" << x * scale << "' y='" << y * scale << "' width='" << w * scale << "' height='" << h * scale
+        << "'/>";
+  };
+  auto square = [&](double x, double y, double w) {  // a closed path, for holes
+    svg << " M" << x * scale << " " << y * scale << " h" << w * scale << " v" << w * scale << " h" << -w * scale << " Z";
+  };
+  auto circle = [&](double cx, double cy, double r) {  // two half-circle arcs
+    const double x0 = (cx - r) * scale, x1 = (cx + r) * scale, y = cy * scale, radius = r * scale;
+    svg << " M" << x0 << " " << y << " A" << radius << " " << radius << " 0 1 0 " << x1 << " " << y << " A" << radius
+        << " " << radius << " 0 1 0 " << x0 << " " << y << " Z";
+  };
+  svg << "<svg xmlns='http://www.w3.org/2000/svg' viewBox='0 0 " << 100 * scale << " " << 100 * scale << "'>";
+  svg << "<g id='container'>";
+  rect(0, 0, 100, 100);
+  svg << "</g><g id='fixed'>";
+  rect(47, 47, 6, 6);
+  svg << "</g><g id='elements'><g><path fill-rule='evenodd' d='";
+  square(5, 5, 40);
+  circle(25, 25, 15);
+  svg << "'/></g><g><path fill-rule='evenodd' d='";
+  square(55, 5, 40);
+  square(70, 20, 1.5);
+  svg << "'/></g><g>";
+  rect(5, 55, 40, 40);
+  svg << "</g><g>";
+  rect(55, 55, 40, 40);
+  svg << "</g></g></svg>";
+  return svg.str();
+}
+
+TEST_F(CliMetrics, EvennessMapAndScaleInvariance) {
+  const std::string small = folder_->write("four.svg", fourSquares(1.0));
+  const std::string large = folder_->write("four-large.svg", fourSquares(2.5));
+  PakRun run = runPak("metrics " + shellQuoted(small) + " " + shellQuoted(large) + kFast + " --gap 5 --json " +
+                      shellQuoted(file("four.json")) + " --evenness-map " + shellQuoted(file("even.png")));
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  const json all = json::parse(readWholeFile(file("four.json")));
+  const json& a = all["packings"][0]["evenness"];
+  const json& b = all["packings"][1]["evenness"];
+  EXPECT_NEAR(a["h"].get<double>(), 2.5, 0.25);  // half a cell of the 200-cell grid
+  EXPECT_GT(a["P3"].get<double>(), 0.0);
+  // The fixed square is positive space here and invisible to the chapter-6 ratios.
+  const double art = 4 * 40 * 40 - 3.14159 * 15 * 15;  // the eye aside
+  EXPECT_NEAR(all["packings"][0]["negative-ratio"].get<double>(), 1.0 - (art - 1.5 * 1.5) / 1e4, 1e-4);
+  EXPECT_NEAR(a["negative-ratio"].get<double>(), 1.0 - (art + 6 * 6) / 1e4, 5e-3);
+  // Scaling the whole file by 2.5 scales the lengths and nothing else.
+  EXPECT_NEAR(b["h"].get<double>(), 2.5 * a["h"].get<double>(), 1e-6);
+  for (const char* ratio : {"negative-ratio", "P1", "P2", "P3", "largest-radius-over-h", "width-spread"})
+    EXPECT_NEAR(b[ratio].get<double>(), a[ratio].get<double>(), 1e-4) << ratio;
+
+  const PngPixels image = readPngPixels(file("even-1.png"));
+  ASSERT_EQ(image.width, 200);
+  ASSERT_EQ(image.height, 200);
+  EXPECT_TRUE(near(image.at(50, 44), 214, 33, 26)) << "near the pocket centre, D > 3h: red";
+  EXPECT_TRUE(near(image.at(50, 32), 250, 158, 38)) << "D = 6.25 in the pocket, 2h < D < 3h: orange";
+  EXPECT_TRUE(near(image.at(141, 41), 128, 128, 128)) << "the filled eye: dark grey";
+  EXPECT_TRUE(near(image.at(150, 150), 184, 184, 184)) << "an element: light grey";
+  EXPECT_TRUE(near(image.at(100, 100), 184, 184, 184)) << "the fixed square: light grey";
+  // The wall channel's midline, y = 2.5, is white in column 50 (x = 25).
+  bool axis = false;
+  for (int y = 3; y <= 6; ++y) axis = axis || near(image.at(50, y), 255, 255, 255);
+  EXPECT_TRUE(axis);
+  EXPECT_EQ(readPngPixels(file("even-2.png")).width, 200);
+  PakRun bad = runPak("metrics " + shellQuoted(small) + kFast + " --evenness-map " + shellQuoted(file("even.jpg")));
   EXPECT_EQ(bad.exitCode, 2);
   EXPECT_EQ(bad.errLines().size(), 1u) << bad.err;
 }

@@ -40,6 +40,20 @@ TEST(PackingReader, PakLayoutGivesOneOutlinePerElementGroup) {
   EXPECT_NEAR(pak::area(packing.elements[2]), 25.0, 1e-6);
 }
 
+// Pak writes fixed elements in a `fixed` layer: their paint is the fixed art, not elements.
+TEST(PackingReader, FixedLayerIsFixedArt) {
+  const std::string fixedLayer =
+      "<g id='fixed'><rect x='30' y='30' width='10' height='10'/><rect x='60' y='10' width='5' height='4'/></g>";
+  PackingGeometry packing = read(kPakLayout + fixedLayer);
+  EXPECT_EQ(packing.elements.size(), 3u);
+  EXPECT_NEAR(pak::area(packing.fixed), 120.0, 1e-6);
+  PackingReadOptions named;
+  named.fixedLayer = "Obstacles";
+  PackingGeometry renamed = read(kPakLayout + "<g id='obstacles'><rect x='30' y='30' width='10' height='10'/></g>", named);
+  EXPECT_NEAR(pak::area(renamed.fixed), 100.0, 1e-6);
+  EXPECT_TRUE(read(kPakLayout).fixed.empty());
+}
+
 TEST(PackingReader, StrokesCountAsPaintedArt) {
   PackingGeometry packing = read(
       "<g id='container'><rect width='100' height='100' fill='none' stroke='black'/></g>"

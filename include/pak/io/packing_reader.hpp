@@ -14,6 +14,9 @@ namespace pak {
 struct PackingReadOptions {
   std::string containerLayer = "container";  // matched lower-cased, like the reader's layers
   std::string elementsLayer = "elements";
+  // What this layer paints is PackingGeometry::fixed (Pak writes fixed elements there); with
+  // no container layer, its shapes are elements like any others.
+  std::string fixedLayer = "fixed";
 };
 
 // Throws InputError when no container is found, there are no elements, or an element lies
