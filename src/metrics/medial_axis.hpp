@@ -26,7 +26,8 @@ struct AxisCrossing {
 //     misrepresent negative space (Fig. 6.8), and those raster noise grows along a smooth
 //     boundary (their angle shrinks like sqrt(2 / distance)). 105° lies midway between the
 //     right angle and the three-way junction.
-// Both tests are ratios of lengths, so the axis of a scaled packing is the same axis scaled.
+// The limit of 3 cells and the allowance are raster-noise filters, which fade as the grid gets
+// finer; the angle itself is scale-free.
 // Each crossing is weighted by |cos| of the angle between b - a (the axis normal) and p → q:
 // rows are crossed |t_y| times per unit length of an axis with unit tangent t, columns |t_x|
 // times, so the weights sum to the axis length whatever its direction.
