@@ -19,16 +19,6 @@
 #include "sim/canonical_frame.hpp"
 
 namespace pak {
-
-const char* toString(StopReason reason) {
-  switch (reason) {
-    case StopReason::TargetFill: return "target-fill";
-    case StopReason::Stalled: return "stalled";
-    case StopReason::IterationCap: return "iteration-cap";
-  }
-  return "?";
-}
-
 namespace {
 
 // A library element scaled into canonical units, centred on its outline's centroid.
@@ -497,23 +487,6 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Library&
   secondPass.seconds = secondsSince(secondaryStart);
   packing.passes.push_back(secondPass);
   return packing;
-}
-
-std::vector<Region> artOutlines(const Packing& packing) {
-  std::vector<Region> outlines;
-  for (const PlacedElement& e : packing.elements) {
-    std::vector<Region> painted;
-    for (const Shape& s : e.art) painted.push_back(paintedRegion(s));
-    outlines.push_back(unite(painted));
-  }
-  return outlines;
-}
-
-double artFill(const Packing& packing) {
-  double total = area(packing.fixedArt);
-  for (const Region& r : artOutlines(packing)) total += area(r);
-  double a = area(packing.container);
-  return a > 0.0 ? total / a : 0.0;
 }
 
 }  // namespace pak

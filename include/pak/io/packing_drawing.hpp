@@ -4,7 +4,7 @@
 // debug layers <g id="skins">, <g id="meshes"> on request.
 #include "pak/geom/scene.hpp"
 #include "pak/io/drawing.hpp"
-#include "pak/repulsion/repulsion.hpp"
+#include "pak/sim/packing.hpp"
 
 namespace pak {
 
