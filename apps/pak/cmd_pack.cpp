@@ -20,6 +20,7 @@
 #include "pak/io/png_renderer.hpp"
 #include "pak/io/scene_loader.hpp"
 #include "pak/io/svg_writer.hpp"
+#include "pak/io/tile_drawing.hpp"
 #include "pak/repulsion/repulsion.hpp"
 #include "pak/repulsion/repulsion_presets.hpp"
 #include "pak/repulsion/shape_matching.hpp"

@@ -2,6 +2,7 @@
 
 #include <filesystem>
 
+#include "pak/io/tile_drawing.hpp"
 #include "pak/repulsion/tiling.hpp"
 
 namespace pak {

@@ -11,6 +11,7 @@
 #include "pak/io/packing_drawing.hpp"
 #include "pak/io/scene_loader.hpp"
 #include "pak/io/svg_writer.hpp"
+#include "pak/io/tile_drawing.hpp"
 #include "pak/repulsion/repulsion.hpp"
 #include "repulsion/mesh_fixtures.hpp"
 #include "repulsion/packing_simulation.hpp"

@@ -8,7 +8,6 @@
 
 #include "pak/geom/polygon.hpp"
 #include "pak/geom/scene.hpp"
-#include "pak/io/drawing.hpp"
 
 namespace pak {
 
@@ -33,11 +32,5 @@ bool clonesOverlap(const std::vector<Region>& regions, Vec2 period);
 // every clone of every region clipped to [0, nx W] × [0, ny H], one entry per non-empty
 // clone. verifyPacking of this against that rectangle checks the seams.
 std::vector<Region> periodicRepetition(const std::vector<Region>& regions, Vec2 period, int nx, int ny);
-
-// Tile drawing: each child group of `elements` (one per element) gets its clones that reach
-// into the tile, and the group is clipped to the tile, so the drawing is one seamless tile.
-void addPeriodicClones(DrawingGroup& elements, Vec2 period);
-// The nx × ny repetition of a tile drawing (clips moved along), for previews.
-Drawing tileRepetition(const Drawing& tile, Vec2 period, int nx, int ny);
 
 }  // namespace pak
