@@ -146,7 +146,7 @@ struct CurveSubpath {
 };
 
 struct PendingShape {
-  Shape shape;  // everything but the subpaths and the paint
+  SvgShape shape;  // everything but the subpaths and the paint
   std::vector<CurveSubpath> subpaths;
   Paint fill, stroke;
   double fillOpacity = 1.0, strokeOpacity = 1.0;
@@ -501,13 +501,13 @@ class NodeContext {
   std::string layer_;
   bool layerKnown_ = false;
   int topGroup_ = -1;
-  int layerGroup_ = -1;       // see Shape::layerGroup
+  int layerGroup_ = -1;       // see SvgShape::layerGroup
   bool isLayerGroup_ = false; // this group names the layer: its child groups are numbered
   int childGroups_ = 0;
   bool isRoot_ = false;
   bool fixedLayer_ = false;   // the outermost group of a `fixed` layer
-  std::string elements_;      // see Shape::elements
-  std::string gap_;           // see Shape::gap
+  std::string elements_;      // see SvgShape::elements
+  std::string gap_;           // see SvgShape::gap
 
  private:
   // The layer of a named group: the nearest ancestor named like a Pak layer wins, else the
@@ -631,7 +631,7 @@ class ShapeContext : public NodeContext {
       }
     }
     pending.subpaths = std::move(subpaths_);
-    Shape& shape = pending.shape;
+    SvgShape& shape = pending.shape;
     shape.strokeWidth = style_.strokeWidth * m.lengthScale();
     shape.opacity = effectiveOpacity();
     shape.fillRule = style_.fillRule;
@@ -1347,7 +1347,7 @@ SvgDocument readSvgString(const std::string& text, const std::string& name, cons
   const double tolerance = extent > 0 ? options.flatness * extent : options.flatness;
 
   for (PendingShape& pending : state.shapes) {
-    Shape shape = std::move(pending.shape);
+    SvgShape shape = std::move(pending.shape);
     for (const CurveSubpath& curves : pending.subpaths) {
       Subpath subpath = flatten(curves, tolerance);
       if (subpath.points.size() >= 2) shape.subpaths.push_back(std::move(subpath));

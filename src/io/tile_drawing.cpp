@@ -1,4 +1,4 @@
-// Drawing tileable packings: clones across the tile's edges, and repeated previews.
+// Drawing tileable packings: the tile's layout, clones across its edges, repeated previews.
 #include "pak/io/tile_drawing.hpp"
 
 #include <array>
@@ -9,8 +9,8 @@
 namespace pak {
 namespace {
 
-void translate(std::vector<Shape>& shapes, Vec2 offset) {
-  for (Shape& s : shapes)
+void translate(std::vector<DrawnShape>& shapes, Vec2 offset) {
+  for (DrawnShape& s : shapes)
     for (Subpath& sub : s.subpaths)
       for (Vec2& p : sub.points) p += offset;
 }
@@ -23,16 +23,32 @@ void translate(DrawingGroup& group, Vec2 offset) {
 
 }  // namespace
 
+SceneLayout tileLayout(Vec2 size) {
+  const Scene tile = tileScene(size);
+  SceneLayout layout;
+  layout.viewBox = Box{{0.0, 0.0}, size};
+  ContainerShape outline;
+  outline.shape.subpaths.push_back({tile.container.front().outer, true});
+  outline.shape.fill.reset();
+  outline.shape.stroke.reset();
+  outline.shape.tag = "rect";
+  outline.shape.layer = "container";
+  outline.keepsPaint = true;  // its paint is none
+  layout.containerShapes.push_back(std::move(outline));
+  return layout;
+}
+
 void addPeriodicClones(DrawingGroup& elements, Vec2 period) {
   const Box tile{{0.0, 0.0}, period};
   const std::array<Vec2, 9> offsets = periodicOffsets(period);
   for (DrawingGroup& element : elements.children) {
-    const std::vector<Shape> original = element.shapes;
-    const Box box = bounds(original);  // strokes included: a stroke may reach across the edge
+    const std::vector<DrawnShape> original = element.shapes;
+    Box box;  // strokes included: a stroke may reach across the edge
+    for (const DrawnShape& shape : original) box.add(bounds(shape));
     for (std::size_t k = 1; k < offsets.size(); ++k) {
       Box moved{box.min + offsets[k], box.max + offsets[k]};
       if (!moved.overlaps(tile)) continue;
-      std::vector<Shape> clone = original;
+      std::vector<DrawnShape> clone = original;
       translate(clone, offsets[k]);
       element.shapes.insert(element.shapes.end(), clone.begin(), clone.end());
     }

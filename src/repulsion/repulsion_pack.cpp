@@ -146,7 +146,6 @@ Packing collectPacking(const PackingSimulation& sim, const std::vector<PreparedE
     placed.art = type.art;
     std::size_t k = 0;
     for (Shape& shape : placed.art) {
-      shape.id.clear();  // copies of one element must not repeat its SVG ids
       shape.strokeWidth *= mesh.growth / frame.scale;
       for (Subpath& sub : shape.subpaths)
         for (Vec2& p : sub.points) p = frame.toInput(artPoints[k++]);

@@ -25,15 +25,7 @@ Scene tileScene(Vec2 size) {
     throw InputError("", "tile size must be two positive numbers W,H");
   Scene scene;
   scene.source = "tile " + std::to_string(size.x) + " x " + std::to_string(size.y);
-  scene.viewBox = tileBox(size);
   scene.container = rectangle(tileBox(size));
-  Shape outline;
-  outline.subpaths.push_back({scene.container.front().outer, true});
-  outline.fill.reset();  // no paint: an outline would draw a line between tiles
-  outline.stroke.reset();
-  outline.tag = "rect";
-  outline.layer = "container";
-  scene.containerShapes.push_back(outline);
   return scene;
 }
 

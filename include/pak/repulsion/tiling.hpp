@@ -13,9 +13,8 @@ namespace pak {
 
 inline bool isTiled(Vec2 tile) { return tile.x > 0.0 && tile.y > 0.0; }
 
-// The scene of a tile run: the rectangle [0, W] × [0, H] as the container, drawn without
-// paint (a visible outline would show as a line between tiles). Throws InputError unless W
-// and H are positive and finite.
+// The scene of a tile run: the rectangle [0, W] × [0, H] as the container (pak/io's
+// tileLayout draws it). Throws InputError unless W and H are positive and finite.
 Scene tileScene(Vec2 size);
 // Is `scene` exactly tileScene(size)'s container?
 bool isTileScene(const Scene& scene, Vec2 size);
