@@ -200,6 +200,7 @@ SvgDocument readPathString(const std::string& text, const std::string& name) {
     SvgShape shape;
     shape.subpaths.push_back(std::move(subpath));
     shape.tag = "path-file";
+    shape.line = lineNumber;
     shape.id = "path" + std::to_string(document.shapes.size() + 1);
     shape.layer = *layer;
     document.shapes.push_back(std::move(shape));

@@ -40,17 +40,23 @@ std::string shapeName(const SvgShape& shape, std::size_t index) {
   return shape.tag + " #" + std::to_string(index + 1);
 }
 
+// Where a shape is, for errors: "file:line" when the reader knows its line.
+std::string placeOf(const std::string& file, const SvgShape& shape) {
+  return shape.line > 0 ? file + ":" + std::to_string(shape.line) : file;
+}
+
 // An AnimationPak handle: a shape whose id starts with `handle-` marks a point (its bounding
 // box's centre) and is not art. Nothing else: nullopt.
 std::optional<ElementHandle> handleOf(const SvgShape& shape, const std::string& file, std::size_t index) {
   static const std::string prefix = "handle-";
   if (lowerCased(shape.id.substr(0, prefix.size())) != prefix) return std::nullopt;
   const std::string name = shape.id.substr(prefix.size());
-  if (name.empty()) throw InputError(file, "shape " + shapeName(shape, index) + ": a handle needs a name after \"handle-\"");
+  if (name.empty())
+    throw InputError(placeOf(file, shape), "shape " + shapeName(shape, index) + ": a handle needs a name after \"handle-\"");
   Box box;
   for (const Subpath& subpath : shape.subpaths)
     for (Vec2 p : subpath.points) box.add(p);
-  if (box.empty()) throw InputError(file, "handle \"" + name + "\" (" + shape.tag + ") has no points");
+  if (box.empty()) throw InputError(placeOf(file, shape), "handle \"" + name + "\" (" + shape.tag + ") has no points");
   return ElementHandle{name, box.center()};
 }
 
@@ -78,8 +84,8 @@ Region enclosedRegion(const SvgShape& shape, const std::string& file, std::size_
   for (const Subpath& subpath : shape.subpaths) {
     if (subpath.points.size() < 2) continue;
     if (!isEffectivelyClosed(subpath, epsilon))
-      throw InputError(file, "container path '" + shapeName(shape, index) +
-                                 "' is not closed (end it with Z, or close it in your editor)");
+      throw InputError(placeOf(file, shape), "container path '" + shapeName(shape, index) +
+                                                 "' is not closed (end it with Z, or close it in your editor)");
     if (subpath.points.size() >= 3) rings.push_back(subpath.points);
   }
   if (rings.empty()) return {};
@@ -109,18 +115,20 @@ LoadedScene sceneFromDocument(const SvgDocument& document) { return sceneFromDoc
 
 namespace {
 
-// `data-gap="30"`: a positive number (canonical units).
-double gapOf(const std::string& attribute, const std::string& sceneFile) {
+// `data-gap="30"`: a positive number (canonical units). `where`: the shape that has it.
+double gapOf(const std::string& attribute, const std::string& where) {
   char* end = nullptr;
   const double gap = std::strtod(attribute.c_str(), &end);
   while (end && (*end == ' ' || *end == '\t')) ++end;
   if (end == attribute.c_str() || (end && *end != '\0') || !std::isfinite(gap) || !(gap > 0.0))
-    throw InputError(sceneFile, "data-gap=\"" + attribute + "\" must be a positive number (canonical units)");
+    throw InputError(where, "data-gap=\"" + attribute + "\" must be a positive number (canonical units)");
   return gap;
 }
 
-// `data-elements="a.svg, b/"`: the files and folders, relative to the scene file.
-std::vector<std::string> elementFilesOf(const std::string& attribute, const std::string& sceneFile) {
+// `data-elements="a.svg, b/"`: the files and folders, relative to the scene file. `where`: the
+// shape that has it.
+std::vector<std::string> elementFilesOf(const std::string& attribute, const std::string& sceneFile,
+                                        const std::string& where) {
   std::vector<std::string> files;
   std::size_t begin = 0;
   while (begin <= attribute.size()) {
@@ -134,7 +142,7 @@ std::vector<std::string> elementFilesOf(const std::string& attribute, const std:
     }
     begin = end + 1;
   }
-  if (files.empty()) throw InputError(sceneFile, "data-elements=\"" + attribute + "\" names no file");
+  if (files.empty()) throw InputError(where, "data-elements=\"" + attribute + "\" names no file");
   return files;
 }
 
@@ -175,6 +183,7 @@ LoadedScene sceneFromDocument(const SvgDocument& document, const SceneOptions& s
   std::vector<Region> containerRegions, holeRegions;
   std::vector<std::string> regionElements;  // data-elements of each container region's shape
   std::vector<std::string> regionGaps;      // and its data-gap
+  std::vector<std::string> regionPlaces;    // and where that shape is, for errors
   std::vector<const Shape*> elementShapes;  // --container-layer elements: the placed elements' art
   std::vector<int> elementKeys;
   for (std::size_t i = 0; i < document.shapes.size(); ++i) {
@@ -208,6 +217,7 @@ LoadedScene sceneFromDocument(const SvgDocument& document, const SceneOptions& s
       containerRegions.push_back(std::move(region));
       regionElements.push_back(shape.elements);
       regionGaps.push_back(shape.gap);
+      regionPlaces.push_back(placeOf(document.file, shape));
     }
   }
   if (elementContainers) {
@@ -244,10 +254,10 @@ LoadedScene sceneFromDocument(const SvgDocument& document, const SceneOptions& s
       ContainerPart part{Region{polygon}, {}, {}};
       for (std::size_t r = 0; r < containerRegions.size() && part.elementFiles.empty(); ++r)
         if (!regionElements[r].empty() && area(intersect(part.region, containerRegions[r], clip)) > 0.0)
-          part.elementFiles = elementFilesOf(regionElements[r], document.file);
+          part.elementFiles = elementFilesOf(regionElements[r], document.file, regionPlaces[r]);
       for (std::size_t r = 0; r < containerRegions.size() && part.gap == 0.0; ++r)
         if (!regionGaps[r].empty() && area(intersect(part.region, containerRegions[r], clip)) > 0.0)
-          part.gap = gapOf(regionGaps[r], document.file);
+          part.gap = gapOf(regionGaps[r], regionPlaces[r]);
       scene.containers.push_back(std::move(part));
     }
   }
@@ -292,7 +302,8 @@ LoadedElement elementFromDocument(const SvgDocument& document) {
     if (std::optional<ElementHandle> handle = handleOf(shape, document.file, i)) {
       for (const ElementHandle& other : element.handles)
         if (other.name == handle->name)
-          throw InputError(document.file, "handle \"" + handle->name + "\" is given twice (id \"" + shape.id + "\")");
+          throw InputError(placeOf(document.file, shape),
+                           "handle \"" + handle->name + "\" is given twice (id \"" + shape.id + "\")");
       element.handles.push_back(std::move(*handle));
       continue;
     }

@@ -32,6 +32,8 @@ TEST(PathReader, PathsColoursAndTypes) {
   SvgDocument document = readPathString(text, "scene.path");
   ASSERT_EQ(document.shapes.size(), 5u);
   const SvgShape& boundary = document.shapes[0];
+  EXPECT_EQ(boundary.line, 4);  // each shape knows its line, for messages
+  EXPECT_EQ(document.shapes[1].line, 5);
   EXPECT_EQ(boundary.tag, "path-file");
   EXPECT_EQ(boundary.layer, "");
   EXPECT_EQ(*boundary.fill, (Color{255, 255, 255, 1.0}));

@@ -117,8 +117,14 @@ TEST(SceneLoaderErrors, UnclosedContainerPath) {
   const std::string message = errorOf([] {
     sceneFromDocument(svgDocument(R"~(<g id="container"><path id="outline" d="M0 0 L50 0 L50 50"/></g>)~", "open.svg"));
   });
-  EXPECT_NE(message.find("open.svg"), std::string::npos) << message;
-  EXPECT_NE(message.find("container path 'outline' is not closed"), std::string::npos) << message;
+  EXPECT_NE(message.find("open.svg:1: container path 'outline' is not closed"), std::string::npos) << message;
+}
+
+TEST(SceneLoaderErrors, BadContainerAttributesNameTheShapesLine) {
+  const std::string message = errorOf([] {
+    sceneFromDocument(svgDocument("<g id=\"container\">\n  <rect width=\"10\" height=\"10\" data-gap=\"dense\"/></g>"));
+  });
+  EXPECT_NE(message.find("scene.svg:2: data-gap=\"dense\" must be a positive number"), std::string::npos) << message;
 }
 
 TEST(SceneLoaderErrors, NoUsableContainer) {

@@ -513,6 +513,19 @@ TEST(SvgReaderErrors, AbsurdCoordinateNamesTheElement) {
   EXPECT_NE(scaled.find("absurd"), std::string::npos) << scaled;
 }
 
+TEST(SvgReaderErrors, ErrorsAndShapesNameTheirLine) {
+  const std::string text = "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 10 10\">\n"
+                           "  <rect id=\"fine\" width=\"1\" height=\"1\"/>\n"
+                           "  <path id=\"far\"\n        d=\"M0 0 L 1e12 5 L0 5 Z\"/>\n</svg>\n";
+  const std::string message = errorOf(text, "lines.svg");
+  EXPECT_NE(message.find("lines.svg:3: <path id=\"far\">: absurd coordinate"), std::string::npos) << message;
+  const std::string garbage = errorOf("<svg xmlns=\"http://www.w3.org/2000/svg\">\n\n<path id=\"p\" d=\"M0 0 L 5 x Z\"/></svg>");
+  EXPECT_NE(garbage.find("bad.svg:3: <path id=\"p\">: attribute d="), std::string::npos) << garbage;
+  SvgDocument document = readSvgString(text.substr(0, text.find("  <path")) + "</svg>", "fine.svg");
+  ASSERT_EQ(document.shapes.size(), 1u);
+  EXPECT_EQ(document.shapes[0].line, 2);
+}
+
 TEST(SvgReaderErrors, GarbagePathData) {
   const std::string message = errorOf(svg(R"~(<path id="p" d="M0 0 L 5 x Z"/>)~"), "garbage.svg");
   EXPECT_NE(message.find("garbage.svg"), std::string::npos) << message;

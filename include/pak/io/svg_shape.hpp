@@ -1,7 +1,7 @@
 #pragma once
 // A shape as its document gives it: the core Shape (geometry and paint) and what only reading
-// and writing documents uses: its SVG id and element, its layer and groups, and the
-// attributes a scene's containers carry. Passing it where a Shape is
+// and writing documents uses: its SVG id and element, where it is in the file, its layer and
+// groups, and the attributes a scene's containers carry. Passing it where a Shape is
 // taken hands the core just the geometry and paint.
 #include <string>
 #include <vector>
@@ -14,6 +14,7 @@ namespace pak {
 struct SvgShape : Shape {
   std::string id;                // the SVG id, if any
   std::string tag;               // "path", "rect", … or "path-file" for .path input
+  int line = 0;                  // line of its element (.path: of its path) in the file; 0: unknown
   std::string layer;             // lower-cased name of the enclosing layer ("" if none)
   int topGroup = -1;             // index of the enclosing top-level <g>, -1 if none
   int layerGroup = -1;           // index of the enclosing direct child <g> of the layer's group
