@@ -22,7 +22,7 @@ void matchCornersOf(benchmark::State& state, const std::string& containerFile, c
     return;
   }
   using namespace pak;
-  Scene scene = loadScene(containerFile);
+  Scene scene = loadScene(containerFile).scene;
   Library library = loadLibrary(elements);
   // The canonical frame (bounding square 1000 wide), elements sized as the packing sizes them.
   Box box = bounds(scene.container);

@@ -100,7 +100,8 @@ int runAnimate(AnimateArguments& args) {
   if (args.frames < 0 || args.frames > 10000) throw InputError("", "--frames must be between 1 and 10000");
 
   const AnimationScript script = readAnimationScript(args.animation);
-  Scene scene = loadScene(args.container, SceneOptions{});
+  const LoadedScene input = loadScene(args.container, SceneOptions{});
+  const Scene& scene = input.scene;
   Library library;
   for (const AnimatedElementSpec& spec : script.elements) {
     Library one = loadLibrary({spec.svg});
@@ -108,7 +109,7 @@ int runAnimate(AnimateArguments& args) {
     library.push_back(std::move(one.front()));
   }
   if (!args.quiet)
-    for (const Warning& w : scene.warnings) std::fprintf(stderr, "pak: warning: %s: %s\n", w.where.c_str(), w.message.c_str());
+    for (const Warning& w : input.warnings) std::fprintf(stderr, "pak: warning: %s: %s\n", w.where.c_str(), w.message.c_str());
 
   const std::uint64_t fingerprint = runFingerprint(args, library);
   AnimationState resumed;
@@ -143,7 +144,7 @@ int runAnimate(AnimateArguments& args) {
   auto frameTime = [&](int i, int count) {
     return script.loop ? static_cast<double>(i) / count : (count > 1 ? static_cast<double>(i) / (count - 1) : 0.0);
   };
-  auto drawingAt = [&](double t) { return packingDrawing(scene, animationFrame(animation, t)); };
+  auto drawingAt = [&](double t) { return packingDrawing(input.layout, animationFrame(animation, t)); };
   AnimationOutputOptions output;
   output.duration = script.duration;
   output.loop = script.loop;
@@ -156,7 +157,7 @@ int runAnimate(AnimateArguments& args) {
   frames.reserve(frameCount);
   for (int i = 0; i < frameCount; ++i) {
     packings.push_back(animationFrame(animation, frameTime(i, frameCount)));
-    frames.push_back(packingDrawing(scene, packings.back()));
+    frames.push_back(packingDrawing(input.layout, packings.back()));
   }
   if (!args.noGif) writeGif(frames, (out / "animation.gif").string(), output);
   if (args.pngFrames) writePngFrames(frames, (out / "frames").string(), output);

@@ -83,10 +83,12 @@ int runFlow(FlowArguments& args) {
   args.options.fillGaps = args.fillGaps;
   if (!args.mirror.empty()) args.options.mirrorX = parseMirror(args.mirror);
 
-  Scene scene = loadScene(args.scene, SceneOptions{});
-  Library library = loadLibrary(args.elements);
+  const LoadedScene input = loadScene(args.scene, SceneOptions{});
+  const Scene& scene = input.scene;
+  const std::vector<LoadedElement> elements = loadElements(args.elements);
+  const Library library = libraryOf(elements);
   if (!args.quiet)
-    for (const Warning& w : scene.warnings) std::fprintf(stderr, "pak: warning: %s: %s\n", w.where.c_str(), w.message.c_str());
+    for (const Warning& w : input.warnings) std::fprintf(stderr, "pak: warning: %s: %s\n", w.where.c_str(), w.message.c_str());
 
   FlowCallbacks callbacks;
   if (!args.quiet)
@@ -108,14 +110,14 @@ int runFlow(FlowArguments& args) {
       if (iteration % args.every != 0 && iteration != args.options.iterations) return;
       char name[64];
       std::snprintf(name, sizeof name, "iteration-%03d.svg", iteration);
-      writeSvgFile(flowDrawing(scene, p), (std::filesystem::path(args.snapshots) / name).string());
+      writeSvgFile(flowDrawing(input.layout, p, elements), (std::filesystem::path(args.snapshots) / name).string());
     };
   }
 
   FlowPacking packing = packFlow(scene, library, args.options, callbacks);
   FlowDrawingOptions drawingOptions;
   drawingOptions.debugLayers = args.debugLayers;
-  Drawing drawing = flowDrawing(scene, packing, drawingOptions);
+  Drawing drawing = flowDrawing(input.layout, packing, elements, drawingOptions);
   SvgWriteOptions svgOptions;
   if (args.smooth) svgOptions.curveTolerance = kSmoothTolerance / packing.canonicalScale;
   writeSvgFile(drawing, args.output, svgOptions);

@@ -62,7 +62,7 @@ int holeCount(const Region& region) {
   return holes;
 }
 
-json shapeJson(const Shape& shape) {
+json shapeJson(const SvgShape& shape) {
   int closed = 0, points = 0;
   for (const Subpath& subpath : shape.subpaths) {
     closed += subpath.closed ? 1 : 0;
@@ -93,7 +93,8 @@ json polylineJson(const Polyline& line) {
   return {{"points", line.size()}, {"length", tidy(polylineLength(line))}, {"bounds", boxJson(bounds(line))}};
 }
 
-json sceneJson(const Scene& scene) {
+json sceneJson(const LoadedScene& loaded) {
+  const Scene& scene = loaded.scene;
   json containers = json::array();
   for (const Polygon& polygon : scene.container)
     containers.push_back({{"area", tidy(area(polygon))},
@@ -101,9 +102,9 @@ json sceneJson(const Scene& scene) {
                           {"points", polygon.outer.size()},
                           {"bounds", boxJson(bounds(polygon))}});
   json containerShapes = json::array();
-  for (const Shape& shape : scene.containerShapes) containerShapes.push_back(shapeJson(shape));
+  for (const ContainerShape& shape : loaded.layout.containerShapes) containerShapes.push_back(shapeJson(shape.shape));
   json fixed = json::array();
-  for (const Shape& shape : scene.fixed) fixed.push_back(shapeJson(shape));
+  for (const SvgShape& shape : loaded.layout.fixedShapes) fixed.push_back(shapeJson(shape));
   json guides = json::array();
   for (const Polyline& guide : scene.guides) guides.push_back(polylineJson(guide));
   json spines = json::array();
@@ -116,9 +117,10 @@ json sceneJson(const Scene& scene) {
           {"spines", spines}};
 }
 
-json elementJson(const ElementArt& element) {
+json elementJson(const LoadedElement& loaded) {
+  const ElementArt& element = loaded.element;
   json paths = json::array();
-  for (const Shape& shape : element.shapes) paths.push_back(shapeJson(shape));
+  for (const SvgShape& shape : loaded.shapes) paths.push_back(shapeJson(shape));
   json spine = nullptr;
   if (element.spine) spine = json::array({point((*element.spine)[0]), point((*element.spine)[1])});
   return {{"name", element.name},
@@ -156,8 +158,8 @@ json inspectFile(const std::string& file) {
     std::string reason = document.warnings.empty() ? "" : " (first skipped: " + document.warnings.front().message + ")";
     throw InputError(file, "no usable shape" + reason);
   }
-  std::optional<Scene> scene;
-  Library elements;
+  std::optional<LoadedScene> scene;
+  std::vector<LoadedElement> elements;
   if (hasLayer(document, "container")) {
     scene = sceneFromDocument(document);  // a broken container layer is an error, not a hint
   } else {
@@ -190,10 +192,10 @@ json inspectFile(const std::string& file) {
   };
   addWarnings(document.warnings);
   if (scene) addWarnings(scene->warnings);
-  for (const ElementArt& element : elements) addWarnings(element.warnings);
+  for (const LoadedElement& element : elements) addWarnings(element.warnings);
 
   json elementList = json::array();
-  for (const ElementArt& element : elements) elementList.push_back(elementJson(element));
+  for (const LoadedElement& element : elements) elementList.push_back(elementJson(element));
   const Box& box = document.viewBox;
   return {{"file", file},
           {"width", tidy(document.width)},

@@ -20,6 +20,7 @@
 #include "pak/io/png_renderer.hpp"
 #include "pak/io/scene_loader.hpp"
 #include "pak/io/svg_writer.hpp"
+#include "pak/io/tile_drawing.hpp"
 #include "pak/repulsion/repulsion.hpp"
 #include "pak/repulsion/repulsion_presets.hpp"
 #include "pak/repulsion/shape_matching.hpp"
@@ -142,10 +143,12 @@ int runPack(PackArguments& args) {
   if (args.tilePreviewRepeat < 1 || args.tilePreviewRepeat > 16) throw InputError("", "--tile-preview-repeat must be 1 to 16");
   SceneOptions sceneOptions;
   sceneOptions.containerLayer = args.containerLayer;
-  Scene scene = tiled ? tileScene(args.options.tile) : loadScene(args.container, sceneOptions);
+  const LoadedScene input = tiled ? LoadedScene{tileScene(args.options.tile), tileLayout(args.options.tile), {}}
+                                  : loadScene(args.container, sceneOptions);
+  const Scene& scene = input.scene;
   Library library = loadLibrary(args.elements);
   Library secondaryLibrary = args.secondary.empty() ? Library{} : loadLibrary(args.secondary);
-  for (const Warning& w : scene.warnings)
+  for (const Warning& w : input.warnings)
     if (!args.quiet) std::fprintf(stderr, "pak: warning: %s: %s\n", w.where.c_str(), w.message.c_str());
 
   const bool tty = isatty(STDERR_FILENO);
@@ -168,7 +171,7 @@ int runPack(PackArguments& args) {
     callbacks.onSnapshot = [&](const Packing& p) {
       char name[64];
       std::snprintf(name, sizeof name, "snapshot-%06d.svg", p.iterations);
-      writeSvgFile(packingDrawing(scene, p), (std::filesystem::path(args.snapshots) / name).string());
+      writeSvgFile(packingDrawing(input.layout, p), (std::filesystem::path(args.snapshots) / name).string());
     };
   }
 
@@ -179,7 +182,7 @@ int runPack(PackArguments& args) {
 
   PackingDrawingOptions drawingOptions;
   drawingOptions.debugLayers = args.debugLayers;
-  Drawing drawing = packingDrawing(scene, packing, drawingOptions);
+  Drawing drawing = packingDrawing(input.layout, packing, drawingOptions);
   writeSvgFile(drawing, args.output);
   if (!args.png.empty()) {
     PngOptions png;

@@ -75,10 +75,9 @@ std::string extensionOf(const std::string& path) {
 void addBackground(Drawing& drawing, const Color& color) {
   Box box = drawing.viewBox;
   if (box.empty()) return;
-  Shape rectangle;
+  DrawnShape rectangle;
   rectangle.subpaths = {{{box.min, {box.max.x, box.min.y}, box.max, {box.min.x, box.max.y}}, true}};
   rectangle.fill = color;
-  rectangle.tag = "rect";
   DrawingGroup group;
   group.id = "background";
   group.shapes.push_back(rectangle);

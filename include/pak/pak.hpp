@@ -9,3 +9,4 @@
 #include "pak/geom/scene.hpp"
 #include "pak/metrics/metrics.hpp"
 #include "pak/repulsion/repulsion.hpp"
+#include "pak/sim/packing.hpp"

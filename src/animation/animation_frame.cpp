@@ -43,7 +43,6 @@ Packing animationFrame(const AnimatedPacking& animation, double t) {
     placed.art = element.art;
     std::size_t k = 0;
     for (Shape& shape : placed.art) {
-      shape.id.clear();  // copies of one element must not repeat its SVG ids
       shape.strokeWidth *= strokeScale;
       for (Subpath& sub : shape.subpaths)
         for (Vec2& p : sub.points) p = artPoints[k++];

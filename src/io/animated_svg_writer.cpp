@@ -33,7 +33,7 @@ bool sameMarkup(const std::optional<RawMarkup>& a, const std::optional<RawMarkup
 
 // Same paint and the same point counts, so the two `d` strings have the same commands and
 // SMIL can interpolate between them.
-bool sameShapeStructure(const Shape& a, const Shape& b) {
+bool sameShapeStructure(const DrawnShape& a, const DrawnShape& b) {
   if (a.subpaths.size() != b.subpaths.size() || a.fill != b.fill || a.stroke != b.stroke ||
       a.opacity != b.opacity || a.fillRule != b.fillRule || a.id != b.id)
     return false;
@@ -65,12 +65,12 @@ bool sameStructure(const std::vector<Drawing>& frames) {
 }
 
 // Every shape of the drawing in the order the builder writes them.
-void collectShapes(const DrawingGroup& group, std::vector<const Shape*>& shapes) {
-  for (const Shape& shape : group.shapes) shapes.push_back(&shape);
+void collectShapes(const DrawingGroup& group, std::vector<const DrawnShape*>& shapes) {
+  for (const DrawnShape& shape : group.shapes) shapes.push_back(&shape);
   for (const DrawingGroup& child : group.children) collectShapes(child, shapes);
 }
-std::vector<const Shape*> shapesOf(const Drawing& drawing) {
-  std::vector<const Shape*> shapes;
+std::vector<const DrawnShape*> shapesOf(const Drawing& drawing) {
+  std::vector<const DrawnShape*> shapes;
   for (const DrawingGroup& group : drawing.groups) collectShapes(group, shapes);
   return shapes;
 }
@@ -97,9 +97,9 @@ std::string fraction(std::size_t i, std::size_t n) { return formatNumber(static_
 // duration; a loop ends on the first frame again, so the wrap from the last is interpolated too.
 std::string morphingSvg(const std::vector<Drawing>& frames, const AnimationOutputOptions& options) {
   const std::size_t n = frames.size();
-  std::vector<std::vector<const Shape*>> shapes;
+  std::vector<std::vector<const DrawnShape*>> shapes;
   for (const Drawing& frame : frames) shapes.push_back(shapesOf(frame));
-  std::unordered_map<const Shape*, std::size_t> indexOf;
+  std::unordered_map<const DrawnShape*, std::size_t> indexOf;
   for (std::size_t i = 0; i < shapes[0].size(); ++i) indexOf[shapes[0][i]] = i;
 
   const std::size_t steps = options.loop ? n : n - 1;  // intervals between the values
@@ -111,7 +111,7 @@ std::string morphingSvg(const std::vector<Drawing>& frames, const AnimationOutpu
   const std::string repeat = timing(options);
 
   SvgBuilder builder(precisionFor(frames.front(), options), 0.0);
-  builder.shapeChildren = [&](const Shape& shape, const std::string& d, int depth) -> std::string {
+  builder.shapeChildren = [&](const DrawnShape& shape, const std::string& d, int depth) -> std::string {
     if (n < 2) return {};
     std::size_t index = indexOf.at(&shape);
     std::string values = d;

@@ -29,8 +29,9 @@ class Reader {
  public:
   explicit Reader(std::string where) : where_(std::move(where)) {}
 
+  // `path`: the field, as in "elements[2].rotation[1]": where in the file the error is.
   [[noreturn]] void fail(const std::string& path, const std::string& what) const {
-    throw InputError(where_, path.empty() ? what : path + ": " + what);
+    throw InputError(path.empty() ? where_ : where_ + ": " + path, what);
   }
 
   void requireObject(const Json& value, const std::string& path, const std::string& what) const {

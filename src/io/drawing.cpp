@@ -6,6 +6,20 @@
 
 namespace pak {
 
+std::vector<DrawnShape> drawnShapes(const std::vector<Shape>& shapes) {
+  std::vector<DrawnShape> drawn;
+  drawn.reserve(shapes.size());
+  for (const Shape& shape : shapes) drawn.push_back({shape});
+  return drawn;
+}
+
+std::vector<DrawnShape> drawnShapes(const std::vector<SvgShape>& shapes) {
+  std::vector<DrawnShape> drawn;
+  drawn.reserve(shapes.size());
+  for (const SvgShape& shape : shapes) drawn.push_back({shape, shape.id});
+  return drawn;
+}
+
 Drawing drawingFromDocument(const SvgDocument& document) {
   Drawing drawing;
   drawing.viewBox = document.viewBox.empty() ? bounds(document.shapes) : document.viewBox;
@@ -13,7 +27,7 @@ Drawing drawingFromDocument(const SvgDocument& document) {
   drawing.height = document.height;
   // One group per layer, in the order layers first appear; shapes keep their document
   // order inside their layer. Shapes outside any layer share a group without id.
-  for (const Shape& shape : document.shapes) {
+  for (const SvgShape& shape : document.shapes) {
     DrawingGroup* group = nullptr;
     for (DrawingGroup& existing : drawing.groups)
       if (existing.id == shape.layer) group = &existing;
@@ -22,7 +36,7 @@ Drawing drawingFromDocument(const SvgDocument& document) {
       group = &drawing.groups.back();
       group->id = shape.layer;
     }
-    group->shapes.push_back(shape);
+    group->shapes.push_back({shape, shape.id});
   }
   return drawing;
 }

@@ -32,9 +32,19 @@ DrawingGroup fieldLayer(const FlowPacking& packing, double hairline) {
   return group;
 }
 
+// The SVG ids FLOWPAK's output has always given an element's shapes: those of the library
+// element it copies, when libraryIndex finds that element (same file, same shapes).
+void nameShapes(DrawingGroup& group, const FlowElement& e, const std::vector<LoadedElement>& elements) {
+  if (e.libraryIndex < 0 || e.libraryIndex >= static_cast<int>(elements.size())) return;
+  const LoadedElement& original = elements[static_cast<std::size_t>(e.libraryIndex)];
+  if (original.element.source != e.source || original.shapes.size() != group.shapes.size()) return;
+  for (std::size_t k = 0; k < group.shapes.size(); ++k) group.shapes[k].id = original.shapes[k].id;
+}
+
 }  // namespace
 
-Drawing flowDrawing(const Scene& scene, const FlowPacking& packing, const FlowDrawingOptions& options) {
+Drawing flowDrawing(const SceneLayout& layout, const FlowPacking& packing, const std::vector<LoadedElement>& elements,
+                    const FlowDrawingOptions& options) {
   // The shared layout from a Packing that holds just the art.
   Packing view;
   view.container = packing.container;
@@ -50,7 +60,13 @@ Drawing flowDrawing(const Scene& scene, const FlowPacking& packing, const FlowDr
       placed.container = e.container;
       view.elements.push_back(std::move(placed));
     }
-  Drawing drawing = packingDrawing(scene, view);
+  Drawing drawing = packingDrawing(layout, view);
+  DrawingGroup* drawnElements = nullptr;
+  for (DrawingGroup& group : drawing.groups)
+    if (group.id == "elements") drawnElements = &group;
+  std::size_t k = 0;
+  for (const auto* list : {&packing.elements, &packing.gapElements})
+    for (const FlowElement& e : *list) nameShapes(drawnElements->children[k++], e, elements);
   if (!options.debugLayers) return drawing;
 
   const double hairline = 0.8 / packing.canonicalScale;

@@ -2,40 +2,43 @@
 
 #include <filesystem>
 
+#include "pak/io/tile_drawing.hpp"
 #include "pak/repulsion/tiling.hpp"
 
 namespace pak {
 
-Drawing packingDrawing(const Scene& scene, const Packing& packing, const PackingDrawingOptions& options) {
+Drawing packingDrawing(const SceneLayout& layout, const Packing& packing, const PackingDrawingOptions& options) {
   Drawing drawing;
-  drawing.viewBox = scene.viewBox.empty() ? bounds(scene.container) : scene.viewBox;
-  drawing.width = scene.width;
-  drawing.height = scene.height;
+  drawing.viewBox = layout.viewBox;
+  drawing.width = layout.width;
+  drawing.height = layout.height;
 
-  // A container drawn on a `container` layer keeps the artist's styling; a file that is a
-  // container by itself (an icon, a .path outline) is drawn as an outline, or its fill
-  // would hide the elements.
-  DrawingGroup container{"container", "", {}, scene.containerShapes, {}};
-  double outlineWidth = 1.5 / packing.canonicalScale;
-  for (Shape& s : container.shapes)
-    if (s.layer != "container") {
-      s.stroke = s.fill ? *s.fill : (s.stroke ? *s.stroke : Color{});
-      s.stroke->alpha = 1.0;
-      s.fill.reset();
-      s.strokeWidth = outlineWidth;
+  // A container shape that keeps its paint is drawn as the artist styled it; the others are
+  // drawn as outlines, or their fill would hide the elements.
+  DrawingGroup container{"container", "", {}, {}, {}};
+  const double outlineWidth = 1.5 / packing.canonicalScale;
+  for (const ContainerShape& shape : layout.containerShapes) {
+    DrawnShape drawn{shape.shape, shape.shape.id};
+    if (!shape.keepsPaint) {
+      drawn.stroke = drawn.fill ? *drawn.fill : (drawn.stroke ? *drawn.stroke : Color{});
+      drawn.stroke->alpha = 1.0;
+      drawn.fill.reset();
+      drawn.strokeWidth = outlineWidth;
     }
+    container.shapes.push_back(std::move(drawn));
+  }
   drawing.groups.push_back(std::move(container));
   // SVG input: the writer copies the artist's fixed layer as written; .path input: re-drawn.
-  if (!scene.fixed.empty() || !scene.fixedMarkup.empty()) {
-    DrawingGroup fixed{"fixed", "", {}, scene.fixed, {}};
-    if (!scene.fixedMarkup.empty()) fixed.markup = scene.fixedMarkup;
+  if (!layout.fixedShapes.empty() || !layout.fixedMarkup.empty()) {
+    DrawingGroup fixed{"fixed", "", {}, drawnShapes(layout.fixedShapes), {}};
+    if (!layout.fixedMarkup.empty()) fixed.markup = layout.fixedMarkup;
     drawing.groups.push_back(std::move(fixed));
   }
 
   DrawingGroup elements{"elements", "", {}, {}, {}};
   for (const PlacedElement& e : packing.elements) {
     std::string name = std::filesystem::path(e.source).filename().string();
-    elements.children.push_back({"", e.secondary ? "element secondary" : "element", {{"data-source", name}}, e.art, {}});
+    elements.children.push_back({"", e.secondary ? "element secondary" : "element", {{"data-source", name}}, drawnShapes(e.art), {}});
   }
   if (isTiled(packing.tile)) addPeriodicClones(elements, packing.tile);  // one seamless tile
   drawing.groups.push_back(std::move(elements));

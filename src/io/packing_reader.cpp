@@ -27,7 +27,7 @@ ClipOptions clipFor(const Box& box) {
   return clip;
 }
 
-bool hasClosedSubpath(const Shape& shape) {
+bool hasClosedSubpath(const SvgShape& shape) {
   for (const Subpath& subpath : shape.subpaths)
     if (subpath.closed && subpath.points.size() >= 3) return true;
   return false;
@@ -73,7 +73,7 @@ PackingGeometry fromLayers(const SvgDocument& document, const PackingReadOptions
   std::vector<Region> containerParts, holes, fixed;
   std::vector<const Shape*> elementShapes;
   std::vector<int> keys;
-  for (const Shape& shape : document.shapes) {
+  for (const SvgShape& shape : document.shapes) {
     if (shape.layer == options.containerLayer) containerParts.push_back(filledRegion(shape, clip));
     else if (shape.layer == "holes") holes.push_back(filledRegion(shape, clip));
     else if (shape.layer == options.fixedLayer) fixed.push_back(paintedRegion(shape, clip));
@@ -100,9 +100,9 @@ PackingGeometry fromLayers(const SvgDocument& document, const PackingReadOptions
 PackingGeometry fromLargestShape(const SvgDocument& document, const ClipOptions& clip) {
   PackingGeometry packing;
   packing.source = document.file;
-  const Shape* container = nullptr;
+  const SvgShape* container = nullptr;
   double best = 0.0;
-  for (const Shape& shape : document.shapes) {
+  for (const SvgShape& shape : document.shapes) {
     if (!hasClosedSubpath(shape)) continue;
     Region region = filledRegion(shape, clip);
     double a = area(region);
@@ -118,7 +118,7 @@ PackingGeometry fromLargestShape(const SvgDocument& document, const ClipOptions&
   std::vector<const Shape*> shapes;
   std::vector<int> keys;
   const bool wrapped = container->topGroup >= 0;
-  for (const Shape& shape : document.shapes) {
+  for (const SvgShape& shape : document.shapes) {
     if (&shape == container) continue;
     if (shape.layer == "guides" || shape.layer == "spines" || shape.layer == "holes") continue;
     shapes.push_back(&shape);

@@ -197,9 +197,10 @@ SvgDocument readPathString(const std::string& text, const std::string& name) {
       continue;
     }
 
-    Shape shape;
+    SvgShape shape;
     shape.subpaths.push_back(std::move(subpath));
     shape.tag = "path-file";
+    shape.line = lineNumber;
     shape.id = "path" + std::to_string(document.shapes.size() + 1);
     shape.layer = *layer;
     document.shapes.push_back(std::move(shape));
@@ -211,7 +212,7 @@ SvgDocument readPathString(const std::string& text, const std::string& name) {
 
   // Paint: colour lines when given, else filled black like an SVG path without style.
   for (std::size_t i = 0; i < document.shapes.size(); ++i) {
-    Shape& shape = document.shapes[i];
+    SvgShape& shape = document.shapes[i];
     const auto found = colours.find(pathRegions[i].region);
     const std::size_t index = static_cast<std::size_t>(pathRegions[i].indexInRegion);
     if (found == colours.end() || (!found->second.hasBackground && !found->second.hasForeground)) {
@@ -239,7 +240,7 @@ SvgDocument readPathString(const std::string& text, const std::string& name) {
                 document.shapes.begin() + static_cast<std::ptrdiff_t>(boundary.back()),
                 document.shapes.begin() + static_cast<std::ptrdiff_t>(boundary.back()) + 1);
 
-  for (const Shape& shape : document.shapes)
+  for (const SvgShape& shape : document.shapes)
     if (!shape.layer.empty() &&
         std::find(document.layers.begin(), document.layers.end(), shape.layer) == document.layers.end())
       document.layers.push_back(shape.layer);

@@ -35,27 +35,33 @@ bool isHelperLayer(const std::string& layer) {
 }
 
 // How a shape is named in messages: its id, else its tag and position.
-std::string shapeName(const Shape& shape, std::size_t index) {
+std::string shapeName(const SvgShape& shape, std::size_t index) {
   if (!shape.id.empty()) return shape.id;
   return shape.tag + " #" + std::to_string(index + 1);
 }
 
-// Grid of the boolean operations: fine relative to the document, so that icons drawn in a
-// 24 × 24 box and posters in millimetres are resolved alike.
+// Where a shape is, for errors: "file:line" when the reader knows its line.
+std::string placeOf(const std::string& file, const SvgShape& shape) {
+  return shape.line > 0 ? file + ":" + std::to_string(shape.line) : file;
+}
+
 // An AnimationPak handle: a shape whose id starts with `handle-` marks a point (its bounding
 // box's centre) and is not art. Nothing else: nullopt.
-std::optional<ElementHandle> handleOf(const Shape& shape, const std::string& file, std::size_t index) {
+std::optional<ElementHandle> handleOf(const SvgShape& shape, const std::string& file, std::size_t index) {
   static const std::string prefix = "handle-";
   if (lowerCased(shape.id.substr(0, prefix.size())) != prefix) return std::nullopt;
   const std::string name = shape.id.substr(prefix.size());
-  if (name.empty()) throw InputError(file, "shape " + shapeName(shape, index) + ": a handle needs a name after \"handle-\"");
+  if (name.empty())
+    throw InputError(placeOf(file, shape), "shape " + shapeName(shape, index) + ": a handle needs a name after \"handle-\"");
   Box box;
   for (const Subpath& subpath : shape.subpaths)
     for (Vec2 p : subpath.points) box.add(p);
-  if (box.empty()) throw InputError(file, "handle \"" + name + "\" (" + shape.tag + ") has no points");
+  if (box.empty()) throw InputError(placeOf(file, shape), "handle \"" + name + "\" (" + shape.tag + ") has no points");
   return ElementHandle{name, box.center()};
 }
 
+// Grid of the boolean operations: fine relative to the document, so that icons drawn in a
+// 24 × 24 box and posters in millimetres are resolved alike.
 ClipOptions clipOptionsFor(const Box& box) {
   ClipOptions options;
   const double extent = box.empty() ? 0.0 : std::max(box.width(), box.height());
@@ -72,14 +78,14 @@ bool isEffectivelyClosed(const Subpath& subpath, double epsilon) {
 
 // The region a closed shape encloses, whatever its paint (a container drawn as an outline
 // with fill="none" is still a container).
-Region enclosedRegion(const Shape& shape, const std::string& file, std::size_t index, double epsilon,
+Region enclosedRegion(const SvgShape& shape, const std::string& file, std::size_t index, double epsilon,
                       const ClipOptions& clip) {
   std::vector<Ring> rings;
   for (const Subpath& subpath : shape.subpaths) {
     if (subpath.points.size() < 2) continue;
     if (!isEffectivelyClosed(subpath, epsilon))
-      throw InputError(file, "container path '" + shapeName(shape, index) +
-                                 "' is not closed (end it with Z, or close it in your editor)");
+      throw InputError(placeOf(file, shape), "container path '" + shapeName(shape, index) +
+                                                 "' is not closed (end it with Z, or close it in your editor)");
     if (subpath.points.size() >= 3) rings.push_back(subpath.points);
   }
   if (rings.empty()) return {};
@@ -105,22 +111,24 @@ SvgDocument readDocument(const std::string& path, const SvgReadOptions& options)
   throw InputError(path, "unknown file type '" + extension + "' (Pak reads .svg and .path files)");
 }
 
-Scene sceneFromDocument(const SvgDocument& document) { return sceneFromDocument(document, SceneOptions{}); }
+LoadedScene sceneFromDocument(const SvgDocument& document) { return sceneFromDocument(document, SceneOptions{}); }
 
 namespace {
 
-// `data-gap="30"`: a positive number (canonical units).
-double gapOf(const std::string& attribute, const std::string& sceneFile) {
+// `data-gap="30"`: a positive number (canonical units). `where`: the shape that has it.
+double gapOf(const std::string& attribute, const std::string& where) {
   char* end = nullptr;
   const double gap = std::strtod(attribute.c_str(), &end);
   while (end && (*end == ' ' || *end == '\t')) ++end;
   if (end == attribute.c_str() || (end && *end != '\0') || !std::isfinite(gap) || !(gap > 0.0))
-    throw InputError(sceneFile, "data-gap=\"" + attribute + "\" must be a positive number (canonical units)");
+    throw InputError(where, "data-gap=\"" + attribute + "\" must be a positive number (canonical units)");
   return gap;
 }
 
-// `data-elements="a.svg, b/"`: the files and folders, relative to the scene file.
-std::vector<std::string> elementFilesOf(const std::string& attribute, const std::string& sceneFile) {
+// `data-elements="a.svg, b/"`: the files and folders, relative to the scene file. `where`: the
+// shape that has it.
+std::vector<std::string> elementFilesOf(const std::string& attribute, const std::string& sceneFile,
+                                        const std::string& where) {
   std::vector<std::string> files;
   std::size_t begin = 0;
   while (begin <= attribute.size()) {
@@ -134,7 +142,7 @@ std::vector<std::string> elementFilesOf(const std::string& attribute, const std:
     }
     begin = end + 1;
   }
-  if (files.empty()) throw InputError(sceneFile, "data-elements=\"" + attribute + "\" names no file");
+  if (files.empty()) throw InputError(where, "data-elements=\"" + attribute + "\" names no file");
   return files;
 }
 
@@ -147,43 +155,46 @@ Region silhouette(const Region& region) {
 
 }  // namespace
 
-Scene sceneFromDocument(const SvgDocument& document, const SceneOptions& sceneOptions) {
+LoadedScene sceneFromDocument(const SvgDocument& document, const SceneOptions& sceneOptions) {
   const std::string containerLayer = lowerCased(sceneOptions.containerLayer);
   if (containerLayer.empty() || (containerLayer != "elements" && isHelperLayer(containerLayer)))
     throw InputError(document.file, "--container-layer '" + sceneOptions.containerLayer +
                                         "' cannot hold containers (use container, elements or your own layer name)");
   // `elements`: a previous packing; each placed element is one container.
   const bool elementContainers = containerLayer == "elements";
-  Scene scene;
+  LoadedScene loaded;
+  Scene& scene = loaded.scene;
+  SceneLayout& layout = loaded.layout;
   scene.source = document.file;
-  scene.viewBox = document.viewBox;
-  scene.width = document.width;
-  scene.height = document.height;
-  scene.warnings = document.warnings;
-  scene.fixedMarkup = document.fixedMarkup;
+  layout.viewBox = document.viewBox;
+  layout.width = document.width;
+  layout.height = document.height;
+  layout.fixedMarkup = document.fixedMarkup;
+  loaded.warnings = document.warnings;
 
   const Box box = document.viewBox.empty() ? bounds(document.shapes) : document.viewBox;
   const ClipOptions clip = clipOptionsFor(box);
   const double closeEpsilon = std::max(clip.precision, 1e-9 * std::max(box.width(), box.height()));
 
   const bool hasContainerLayer = std::any_of(document.shapes.begin(), document.shapes.end(),
-                                             [&](const Shape& s) { return s.layer == containerLayer; });
+                                             [&](const SvgShape& s) { return s.layer == containerLayer; });
   if (!hasContainerLayer && containerLayer != "container")
     throw InputError(document.file, "no usable container: the file has no shape in a layer named '" + containerLayer + "'");
   std::vector<Region> containerRegions, holeRegions;
   std::vector<std::string> regionElements;  // data-elements of each container region's shape
   std::vector<std::string> regionGaps;      // and its data-gap
+  std::vector<std::string> regionPlaces;    // and where that shape is, for errors
   std::vector<const Shape*> elementShapes;  // --container-layer elements: the placed elements' art
   std::vector<int> elementKeys;
   for (std::size_t i = 0; i < document.shapes.size(); ++i) {
-    const Shape& shape = document.shapes[i];
+    const SvgShape& shape = document.shapes[i];
     if (elementContainers && shape.layer == containerLayer) {
-      scene.containerShapes.push_back(shape);
-      scene.containerShapes.back().layer = "container";  // drawn as the artist drew it, under the new elements
+      layout.containerShapes.push_back({shape, true});  // drawn as the artist drew it, under the new elements
       elementShapes.push_back(&shape);
       elementKeys.push_back(shape.layerGroup);
     } else if (shape.layer == "fixed") {
       scene.fixed.push_back(shape);
+      layout.fixedShapes.push_back(shape);
     } else if (shape.layer == "guides" || shape.layer == "spines") {
       for (const Subpath& subpath : shape.subpaths)
         if (subpath.points.size() >= 2)
@@ -195,15 +206,18 @@ Scene sceneFromDocument(const SvgDocument& document, const SceneOptions& sceneOp
       continue;  // the previous packing's own container and other layers: not containers now
     } else if (hasContainerLayer ? shape.layer == containerLayer : !isHelperLayer(shape.layer)) {
       // Without a container layer, every shape outside the helper layers outlines the container.
-      scene.containerShapes.push_back(shape);
+      // A container layer keeps the artist's styling; a file that is a container by itself is
+      // drawn as an outline.
+      layout.containerShapes.push_back({shape, shape.layer == "container"});
       Region region = enclosedRegion(shape, document.file, i, closeEpsilon, clip);
       if (area(region) <= 0.0) {
-        scene.warnings.push_back({document.file + ": " + shapeName(shape, i), "container shape encloses no area; ignored"});
+        loaded.warnings.push_back({document.file + ": " + shapeName(shape, i), "container shape encloses no area; ignored"});
         continue;
       }
       containerRegions.push_back(std::move(region));
       regionElements.push_back(shape.elements);
       regionGaps.push_back(shape.gap);
+      regionPlaces.push_back(placeOf(document.file, shape));
     }
   }
   if (elementContainers) {
@@ -212,7 +226,7 @@ Scene sceneFromDocument(const SvgDocument& document, const SceneOptions& sceneOp
     if (containerRegions.empty()) throw InputError(document.file, "no usable container: the elements paint no area");
   }
 
-  if (scene.containerShapes.empty())
+  if (layout.containerShapes.empty())
     throw InputError(document.file, hasContainerLayer || document.shapes.empty()
                                         ? "no usable container: the file has no shape to use as a container"
                                         : "no usable container: every shape is in a fixed/guides/spines/holes layer "
@@ -240,51 +254,56 @@ Scene sceneFromDocument(const SvgDocument& document, const SceneOptions& sceneOp
       ContainerPart part{Region{polygon}, {}, {}};
       for (std::size_t r = 0; r < containerRegions.size() && part.elementFiles.empty(); ++r)
         if (!regionElements[r].empty() && area(intersect(part.region, containerRegions[r], clip)) > 0.0)
-          part.elementFiles = elementFilesOf(regionElements[r], document.file);
+          part.elementFiles = elementFilesOf(regionElements[r], document.file, regionPlaces[r]);
       for (std::size_t r = 0; r < containerRegions.size() && part.gap == 0.0; ++r)
         if (!regionGaps[r].empty() && area(intersect(part.region, containerRegions[r], clip)) > 0.0)
-          part.gap = gapOf(regionGaps[r], document.file);
+          part.gap = gapOf(regionGaps[r], regionPlaces[r]);
       scene.containers.push_back(std::move(part));
     }
   }
-  return scene;
+  // A document always has a box (else it has no shapes and so no container); a hand-made one
+  // may not.
+  if (layout.viewBox.empty()) layout.viewBox = bounds(scene.container);
+  return loaded;
 }
 
-Scene loadScene(const std::string& path, const SvgReadOptions& options) {
+LoadedScene loadScene(const std::string& path, const SvgReadOptions& options) {
   return sceneFromDocument(readDocument(path, options));
 }
 
-Scene loadScene(const std::string& path, const SceneOptions& sceneOptions, const SvgReadOptions& options) {
-  Scene scene = sceneFromDocument(readDocument(path, options), sceneOptions);
+LoadedScene loadScene(const std::string& path, const SceneOptions& sceneOptions, const SvgReadOptions& options) {
+  LoadedScene loaded = sceneFromDocument(readDocument(path, options), sceneOptions);
   // Each distinct data-elements list is read once.
-  std::map<std::vector<std::string>, Library> loaded;
-  for (ContainerPart& part : scene.containers) {
+  std::map<std::vector<std::string>, Library> libraries;
+  for (ContainerPart& part : loaded.scene.containers) {
     if (part.elementFiles.empty()) continue;
-    auto found = loaded.find(part.elementFiles);
-    if (found == loaded.end()) {
+    auto found = libraries.find(part.elementFiles);
+    if (found == libraries.end()) {
       try {
-        found = loaded.emplace(part.elementFiles, loadLibrary(part.elementFiles, options)).first;
+        found = libraries.emplace(part.elementFiles, loadLibrary(part.elementFiles, options)).first;
       } catch (const InputError& error) {
         throw InputError(path, std::string("data-elements: ") + error.what());
       }
     }
     part.library = found->second;
   }
-  return scene;
+  return loaded;
 }
 
-ElementArt elementFromDocument(const SvgDocument& document) {
-  ElementArt element;
+LoadedElement elementFromDocument(const SvgDocument& document) {
+  LoadedElement loaded;
+  ElementArt& element = loaded.element;
   element.source = document.file;
   element.name = stemOf(document.file);
 
   std::vector<std::size_t> artIndices;
   for (std::size_t i = 0; i < document.shapes.size(); ++i) {
-    const Shape& shape = document.shapes[i];
+    const SvgShape& shape = document.shapes[i];
     if (std::optional<ElementHandle> handle = handleOf(shape, document.file, i)) {
       for (const ElementHandle& other : element.handles)
         if (other.name == handle->name)
-          throw InputError(document.file, "handle \"" + handle->name + "\" is given twice (id \"" + shape.id + "\")");
+          throw InputError(placeOf(document.file, shape),
+                           "handle \"" + handle->name + "\" is given twice (id \"" + shape.id + "\")");
       element.handles.push_back(std::move(*handle));
       continue;
     }
@@ -299,15 +318,16 @@ ElementArt elementFromDocument(const SvgDocument& document) {
       continue;
     }
     element.shapes.push_back(shape);
+    loaded.shapes.push_back(shape);
     artIndices.push_back(i);
   }
 
   const ClipOptions clip = clipOptionsFor(bounds(element.shapes));
   std::vector<Region> painted;
-  std::vector<Warning>& warnings = element.warnings;
+  std::vector<Warning>& warnings = loaded.warnings;
   warnings = document.warnings;
-  for (std::size_t k = 0; k < element.shapes.size(); ++k) {
-    const Shape& shape = element.shapes[k];
+  for (std::size_t k = 0; k < loaded.shapes.size(); ++k) {
+    const SvgShape& shape = loaded.shapes[k];
     const std::string where = document.file + ": " + shapeName(shape, artIndices[k]);
     if (shape.fill)
       for (const Subpath& subpath : shape.subpaths)
@@ -329,16 +349,16 @@ ElementArt elementFromDocument(const SvgDocument& document) {
   element.outline = painted.size() == 1 ? painted.front() : unite(painted, clip);
   normalizeOrientation(element.outline);
   if (area(element.outline) <= 0.0) throw InputError(document.file, "the element paints no area");
-  return element;
+  return loaded;
 }
 
-Library elementsFromDocument(const SvgDocument& document) {
-  std::map<int, std::vector<Shape>> byGroup;
-  for (const Shape& shape : document.shapes) byGroup[shape.topGroup].push_back(shape);
+std::vector<LoadedElement> elementsFromDocument(const SvgDocument& document) {
+  std::map<int, std::vector<SvgShape>> byGroup;
+  for (const SvgShape& shape : document.shapes) byGroup[shape.topGroup].push_back(shape);
   const auto groups = std::count_if(byGroup.begin(), byGroup.end(), [](const auto& g) { return g.first >= 0; });
   if (groups < 2) return {elementFromDocument(document)};
 
-  Library library;
+  std::vector<LoadedElement> elements;
   std::vector<std::string> failures;
   for (auto& [group, shapes] : byGroup) {
     SvgDocument part = document;
@@ -347,22 +367,22 @@ Library elementsFromDocument(const SvgDocument& document) {
     std::string name = stemOf(document.file);
     const std::string& layer = part.shapes.front().layer;
     const bool shared = !layer.empty() && std::all_of(part.shapes.begin(), part.shapes.end(),
-                                                      [&](const Shape& s) { return s.layer == layer; });
+                                                      [&](const SvgShape& s) { return s.layer == layer; });
     if (group >= 0) name = shared ? layer : name + "-" + std::to_string(group + 1);
     try {
-      ElementArt element = elementFromDocument(part);
-      element.name = name;
-      library.push_back(std::move(element));
+      LoadedElement element = elementFromDocument(part);
+      element.element.name = name;
+      elements.push_back(std::move(element));
     } catch (const InputError& error) {
       failures.push_back(error.what());
     }
   }
-  if (library.empty())
+  if (elements.empty())
     throw InputError(document.file, "no group paints any area" + (failures.empty() ? "" : " (" + failures.front() + ")"));
-  return library;
+  return elements;
 }
 
-Library loadLibrary(const std::vector<std::string>& pathsOrFolders, const SvgReadOptions& options) {
+std::vector<LoadedElement> loadElements(const std::vector<std::string>& pathsOrFolders, const SvgReadOptions& options) {
   std::vector<std::string> files;
   for (const std::string& path : pathsOrFolders) {
     std::error_code error;
@@ -387,11 +407,21 @@ Library loadLibrary(const std::vector<std::string>& pathsOrFolders, const SvgRea
     for (const std::string& path : pathsOrFolders) where += (where.empty() ? "" : ", ") + path;
     throw InputError(where, "no element files found (expected .svg or .path files)");
   }
+  std::vector<LoadedElement> elements;
+  for (const std::string& file : files)
+    for (LoadedElement& element : elementsFromDocument(readDocument(file, options))) elements.push_back(std::move(element));
+  return elements;
+}
+
+Library loadLibrary(const std::vector<std::string>& pathsOrFolders, const SvgReadOptions& options) {
   Library library;
-  for (const std::string& file : files) {
-    Library fromFile = elementsFromDocument(readDocument(file, options));
-    for (ElementArt& element : fromFile) library.push_back(std::move(element));
-  }
+  for (LoadedElement& element : loadElements(pathsOrFolders, options)) library.push_back(std::move(element.element));
+  return library;
+}
+
+Library libraryOf(const std::vector<LoadedElement>& elements) {
+  Library library;
+  for (const LoadedElement& element : elements) library.push_back(element.element);
   return library;
 }
 

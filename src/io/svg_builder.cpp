@@ -157,14 +157,14 @@ void SvgBuilder::writeGroup(const DrawingGroup& group, int depth) {
     out_ += group.markup->content;  // as the input wrote it: never re-formatted
     out_ += '\n';
   } else {
-    for (const Shape& shape : group.shapes) writeShape(shape, depth + 1);
+    for (const DrawnShape& shape : group.shapes) writeShape(shape, depth + 1);
   }
   for (const DrawingGroup& child : group.children) writeGroup(child, depth + 1);
   indent(depth);
   out_ += "</g>\n";
 }
 
-void SvgBuilder::writeShape(const Shape& shape, int depth) {
+void SvgBuilder::writeShape(const DrawnShape& shape, int depth) {
   std::string d = pathData(shape, precision_, curveTolerance_);
   if (d.empty()) return;  // nothing to draw; an empty d is an SVG error
   indent(depth);

@@ -30,7 +30,7 @@ class SvgBuilder {
 
   // Optional: markup written inside a shape's <path> (e.g. an <animate>); `d` is the shape's
   // path data. Empty: the path is self-closing.
-  std::function<std::string(const Shape& shape, const std::string& d, int depth)> shapeChildren;
+  std::function<std::string(const DrawnShape& shape, const std::string& d, int depth)> shapeChildren;
   // Appended to every group and shape id (and clip id), to keep ids unique when one document
   // holds several copies of a drawing.
   std::string idSuffix;
@@ -40,7 +40,7 @@ class SvgBuilder {
   void beginDocument(const std::vector<const Drawing*>& drawings);
   void endDocument() { out_ += "</svg>\n"; }
   void writeGroup(const DrawingGroup& group, int depth);
-  void writeShape(const Shape& shape, int depth);
+  void writeShape(const DrawnShape& shape, int depth);
 
   void attribute(const std::string& name, const std::string& value);
   void indent(int depth) { out_.append(static_cast<std::size_t>(depth) * 2, ' '); }

@@ -146,7 +146,7 @@ struct CurveSubpath {
 };
 
 struct PendingShape {
-  Shape shape;  // everything but the subpaths and the paint
+  SvgShape shape;  // everything but the subpaths and the paint
   std::vector<CurveSubpath> subpaths;
   Paint fill, stroke;
   double fillOpacity = 1.0, strokeOpacity = 1.0;
@@ -172,15 +172,38 @@ struct FixedLayerSource {
   double inheritedOpacity = 1.0;
 };
 
+// Line numbers of the source text: rapidxml parses in place, so a node's name points into the
+// buffer at its offset in the text.
+class LineIndex {
+ public:
+  explicit LineIndex(const std::vector<char>& buffer) : buffer_(&buffer) {
+    for (std::size_t i = 0; i < buffer.size(); ++i)
+      if (buffer[i] == '\n') newlines_.push_back(i);
+  }
+  // The 1-based line of the element, 0 when its name is not in the source text.
+  int lineOf(const XmlNode* node) const {
+    const char* name = node ? node->name() : nullptr;
+    if (!name || name < buffer_->data() || name >= buffer_->data() + buffer_->size()) return 0;
+    const std::size_t offset = static_cast<std::size_t>(name - buffer_->data());
+    return static_cast<int>(std::upper_bound(newlines_.begin(), newlines_.end(), offset) - newlines_.begin()) + 1;
+  }
+
+ private:
+  const std::vector<char>* buffer_;
+  std::vector<std::size_t> newlines_;
+};
+
 // Everything one reading shares between the element contexts.
 struct ReaderState {
   std::string file;
+  const LineIndex* lines = nullptr;
   SvgDocument* document = nullptr;
   // Lengths with units; percentages are relative to the root viewBox once known.
   svgpp::factory::length::unitless<> lengths;
   std::vector<PendingShape> shapes;
   std::map<std::string, Gradient> gradients;
   std::string currentElement = "<svg>";  // the element being read, for error messages
+  const XmlNode* currentNode = nullptr;
   std::optional<Box> viewBox;
   std::optional<double> width, height;
   int topLevelGroups = 0;
@@ -188,6 +211,11 @@ struct ReaderState {
 
   void warn(const std::string& where, const std::string& message) {
     document->warnings.push_back({file + (where.empty() ? "" : ": " + where), message});
+  }
+  // Where an error is: "file:line: <path id="…">" (the line when the element has one).
+  std::string placeOf(const XmlNode* node, const std::string& element) const {
+    const int line = lines ? lines->lineOf(node) : 0;
+    return file + (line > 0 ? ":" + std::to_string(line) : "") + ": " + element;
   }
 };
 
@@ -266,10 +294,10 @@ struct ErrorPolicy {
     const std::string where =
         currentReader ? currentReader->currentElement : std::string("<svg>");
     if (isGeometryAttribute(name)) {
-      const std::string file = currentReader ? currentReader->file : std::string();
-      throw InputError(file, where + ": attribute " + name + "=\"" + text + "\" " +
-                                 (looksNonFinite(text) ? "contains a non-finite number (NaN or infinity)"
-                                                       : "cannot be parsed"));
+      const std::string place = currentReader ? currentReader->placeOf(currentReader->currentNode, where) : where;
+      throw InputError(place, "attribute " + name + "=\"" + text + "\" " +
+                                  (looksNonFinite(text) ? "contains a non-finite number (NaN or infinity)"
+                                                        : "cannot be parsed"));
     }
     if (currentReader)
       currentReader->warn(where, "ignored " + name + "=\"" + text + "\" (cannot be parsed)");
@@ -328,6 +356,7 @@ class NodeContext {
   NodeContext(ReaderState& state, const XmlNode* node) : state_(&state), node_(node), isRoot_(true) {
     tag_ = "svg";
     id_ = attributeOf(node, "id");
+    state_->currentNode = node;
   }
 
   // Any other element.
@@ -356,6 +385,7 @@ class NodeContext {
       enterGroupLayer();
     }
     state_->currentElement = describe();
+    state_->currentNode = node;
   }
 
   NodeContext(const NodeContext&) = delete;
@@ -371,7 +401,7 @@ class NodeContext {
   void transform_matrix(const boost::array<double, 6>& m) {
     for (double v : m)
       if (!std::isfinite(v) || std::abs(v) > kAbsurdCoordinate)
-        throw InputError(state_->file, describe() + ": transform has a non-finite or absurd value " +
+        throw InputError(place(), "transform has a non-finite or absurd value " +
                                            formatNumber(v));
     ownTransform_ = Affine{m[0], m[1], m[2], m[3], m[4], m[5]};
   }
@@ -380,7 +410,7 @@ class NodeContext {
   void set(tag::attribute::viewBox, double x, double y, double w, double h) {
     for (double v : {x, y, w, h})
       if (!std::isfinite(v) || std::abs(v) > kAbsurdCoordinate)
-        throw InputError(state_->file, describe() + ": viewBox has a non-finite or absurd value " +
+        throw InputError(place(), "viewBox has a non-finite or absurd value " +
                                            formatNumber(v));
     if (w <= 0 || h <= 0) {
       state_->warn(describe(), "viewBox with zero or negative size ignored");
@@ -485,6 +515,8 @@ class NodeContext {
     if (!id_.empty()) text += " id=\"" + id_ + "\"";
     return text + ">";
   }
+  // Where an error in this element is: file, line and the element.
+  std::string place() const { return state_->placeOf(node_, describe()); }
   Affine ctm() const { return parentCtm_ * ownTransform_; }
   double effectiveOpacity() const { return inheritedOpacity_ * ownOpacity_; }
   bool hidden() const { return ancestorHidden_ || displayNone_; }
@@ -501,13 +533,13 @@ class NodeContext {
   std::string layer_;
   bool layerKnown_ = false;
   int topGroup_ = -1;
-  int layerGroup_ = -1;       // see Shape::layerGroup
+  int layerGroup_ = -1;       // see SvgShape::layerGroup
   bool isLayerGroup_ = false; // this group names the layer: its child groups are numbered
   int childGroups_ = 0;
   bool isRoot_ = false;
   bool fixedLayer_ = false;   // the outermost group of a `fixed` layer
-  std::string elements_;      // see Shape::elements
-  std::string gap_;           // see Shape::gap
+  std::string elements_;      // see SvgShape::elements
+  std::string gap_;           // see SvgShape::gap
 
  private:
   // The layer of a named group: the nearest ancestor named like a Pak layer wins, else the
@@ -536,7 +568,7 @@ class NodeContext {
 
   void checkedViewportLength(const char* name, double v, std::optional<double>& out) {
     if (!std::isfinite(v) || std::abs(v) > kAbsurdCoordinate)
-      throw InputError(state_->file, describe() + ": " + name + " is non-finite or absurd: " + formatNumber(v));
+      throw InputError(place(), std::string(name) + " is non-finite or absurd: " + formatNumber(v));
     if (v <= 0) return;  // zero or negative: as if absent
     out = v;
     if (isRoot_) {
@@ -631,12 +663,13 @@ class ShapeContext : public NodeContext {
       }
     }
     pending.subpaths = std::move(subpaths_);
-    Shape& shape = pending.shape;
+    SvgShape& shape = pending.shape;
     shape.strokeWidth = style_.strokeWidth * m.lengthScale();
     shape.opacity = effectiveOpacity();
     shape.fillRule = style_.fillRule;
     shape.id = id_;
     shape.tag = tag_;
+    shape.line = state_->lines->lineOf(node_);
     shape.layer = layer_;
     shape.topGroup = topGroup_;
     shape.layerGroup = layerGroup_;
@@ -655,7 +688,7 @@ class ShapeContext : public NodeContext {
   // after the transform, on the coordinates Pak will use.
   Vec2 local(double x, double y) {
     if (!std::isfinite(x) || !std::isfinite(y))
-      throw InputError(state_->file, describe() + ": non-finite coordinate (" + formatNumber(x) +
+      throw InputError(place(), "non-finite coordinate (" + formatNumber(x) +
                                          ", " + formatNumber(y) + ")");
     return {x, y};
   }
@@ -663,9 +696,9 @@ class ShapeContext : public NodeContext {
   Vec2 mapped(const Affine& m, Vec2 p) const {
     const Vec2 q = m.apply(p);
     if (!std::isfinite(q.x) || !std::isfinite(q.y))
-      throw InputError(state_->file, describe() + ": coordinate is not a finite number after its transform");
+      throw InputError(place(), "coordinate is not a finite number after its transform");
     if (std::abs(q.x) > kAbsurdCoordinate || std::abs(q.y) > kAbsurdCoordinate)
-      throw InputError(state_->file, describe() + ": absurd coordinate (" + formatNumber(q.x) + ", " +
+      throw InputError(place(), "absurd coordinate (" + formatNumber(q.x) + ", " +
                                          formatNumber(q.y) + "), beyond ±1e9");
     return q;
   }
@@ -1305,8 +1338,10 @@ SvgDocument readSvgString(const std::string& text, const std::string& name, cons
   adoptSvgNamespace(root);
   applyStylesheets(xml, root);
 
+  const LineIndex lines(buffer);
   ReaderState state;
   state.file = name;
+  state.lines = &lines;
   state.document = &document;
   state.lengths.set_viewport_size(0, 0);  // no percentages until a viewBox or size is known
   {
@@ -1317,7 +1352,7 @@ SvgDocument readSvgString(const std::string& text, const std::string& name, cons
     } catch (const InputError&) {
       throw;
     } catch (const std::exception& e) {
-      throw InputError(name, state.currentElement + ": " + e.what());
+      throw InputError(state.placeOf(state.currentNode, state.currentElement), e.what());
     }
   }
 
@@ -1347,7 +1382,7 @@ SvgDocument readSvgString(const std::string& text, const std::string& name, cons
   const double tolerance = extent > 0 ? options.flatness * extent : options.flatness;
 
   for (PendingShape& pending : state.shapes) {
-    Shape shape = std::move(pending.shape);
+    SvgShape shape = std::move(pending.shape);
     for (const CurveSubpath& curves : pending.subpaths) {
       Subpath subpath = flatten(curves, tolerance);
       if (subpath.points.size() >= 2) shape.subpaths.push_back(std::move(subpath));

@@ -19,16 +19,6 @@
 #include "sim/canonical_frame.hpp"
 
 namespace pak {
-
-const char* toString(StopReason reason) {
-  switch (reason) {
-    case StopReason::TargetFill: return "target-fill";
-    case StopReason::Stalled: return "stalled";
-    case StopReason::IterationCap: return "iteration-cap";
-  }
-  return "?";
-}
-
 namespace {
 
 // A library element scaled into canonical units, centred on its outline's centroid.
@@ -156,7 +146,6 @@ Packing collectPacking(const PackingSimulation& sim, const std::vector<PreparedE
     placed.art = type.art;
     std::size_t k = 0;
     for (Shape& shape : placed.art) {
-      shape.id.clear();  // copies of one element must not repeat its SVG ids
       shape.strokeWidth *= mesh.growth / frame.scale;
       for (Subpath& sub : shape.subpaths)
         for (Vec2& p : sub.points) p = frame.toInput(artPoints[k++]);
@@ -497,23 +486,6 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Library&
   secondPass.seconds = secondsSince(secondaryStart);
   packing.passes.push_back(secondPass);
   return packing;
-}
-
-std::vector<Region> artOutlines(const Packing& packing) {
-  std::vector<Region> outlines;
-  for (const PlacedElement& e : packing.elements) {
-    std::vector<Region> painted;
-    for (const Shape& s : e.art) painted.push_back(paintedRegion(s));
-    outlines.push_back(unite(painted));
-  }
-  return outlines;
-}
-
-double artFill(const Packing& packing) {
-  double total = area(packing.fixedArt);
-  for (const Region& r : artOutlines(packing)) total += area(r);
-  double a = area(packing.container);
-  return a > 0.0 ? total / a : 0.0;
 }
 
 }  // namespace pak

@@ -1,6 +1,6 @@
-// Tileable packings (thesis 4.8): periodic geometry shared by seeding, the seeding check,
-// output drawing and verification. The simulation's own periodic neighbour search lives in
-// packing_simulation.cpp (it needs the grid).
+// Tileable packings (thesis 4.8): periodic geometry shared by seeding, the seeding check and
+// verification. The simulation's own periodic neighbour search lives in packing_simulation.cpp
+// (it needs the grid); drawing a tile is pak/io's (tile_drawing.hpp).
 #include "pak/repulsion/tiling.hpp"
 
 #include <cmath>
@@ -10,7 +10,6 @@
 #include "pak/geom/clipping.hpp"
 
 namespace pak {
-
 namespace {
 
 Region rectangle(Box box) {
@@ -19,35 +18,6 @@ Region rectangle(Box box) {
 
 Box tileBox(Vec2 size) { return Box{{0.0, 0.0}, size}; }
 
-Box shapesBounds(const std::vector<Shape>& shapes) {
-  Box box;
-  for (const Shape& s : shapes) {
-    Box b;
-    for (const Subpath& sub : s.subpaths)
-      for (Vec2 p : sub.points) b.add(p);
-    // A stroke reaches half its width beyond the path.
-    if (!b.empty() && s.stroke) {
-      Vec2 half{0.5 * s.strokeWidth, 0.5 * s.strokeWidth};
-      b.add(b.min - half);
-      b.add(b.max + half);
-    }
-    box.add(b);
-  }
-  return box;
-}
-
-void translate(std::vector<Shape>& shapes, Vec2 offset) {
-  for (Shape& s : shapes)
-    for (Subpath& sub : s.subpaths)
-      for (Vec2& p : sub.points) p += offset;
-}
-
-void translate(DrawingGroup& group, Vec2 offset) {
-  translate(group.shapes, offset);
-  if (group.clip) *group.clip = Box{group.clip->min + offset, group.clip->max + offset};
-  for (DrawingGroup& child : group.children) translate(child, offset);
-}
-
 }  // namespace
 
 Scene tileScene(Vec2 size) {
@@ -55,15 +25,7 @@ Scene tileScene(Vec2 size) {
     throw InputError("", "tile size must be two positive numbers W,H");
   Scene scene;
   scene.source = "tile " + std::to_string(size.x) + " x " + std::to_string(size.y);
-  scene.viewBox = tileBox(size);
   scene.container = rectangle(tileBox(size));
-  Shape outline;
-  outline.subpaths.push_back({scene.container.front().outer, true});
-  outline.fill.reset();  // no paint: an outline would draw a line between tiles
-  outline.stroke.reset();
-  outline.tag = "rect";
-  outline.layer = "container";
-  scene.containerShapes.push_back(outline);
   return scene;
 }
 
@@ -127,36 +89,6 @@ std::vector<Region> periodicRepetition(const std::vector<Region>& regions, Vec2 
       }
   }
   return pieces;
-}
-
-void addPeriodicClones(DrawingGroup& elements, Vec2 period) {
-  const Box tile = tileBox(period);
-  const std::array<Vec2, 9> offsets = periodicOffsets(period);
-  for (DrawingGroup& element : elements.children) {
-    const std::vector<Shape> original = element.shapes;
-    const Box box = shapesBounds(original);
-    for (std::size_t k = 1; k < offsets.size(); ++k) {
-      Box moved{box.min + offsets[k], box.max + offsets[k]};
-      if (!moved.overlaps(tile)) continue;
-      std::vector<Shape> clone = original;
-      translate(clone, offsets[k]);
-      element.shapes.insert(element.shapes.end(), clone.begin(), clone.end());
-    }
-  }
-  elements.clip = tile;
-}
-
-Drawing tileRepetition(const Drawing& tile, Vec2 period, int nx, int ny) {
-  Drawing drawing;
-  drawing.viewBox = Box{{0.0, 0.0}, {nx * period.x, ny * period.y}};
-  for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < nx; ++i)
-      for (DrawingGroup group : tile.groups) {
-        translate(group, {i * period.x, j * period.y});
-        if (i != 0 || j != 0) group.id.clear();  // ids stay unique
-        drawing.groups.push_back(std::move(group));
-      }
-  return drawing;
 }
 
 }  // namespace pak

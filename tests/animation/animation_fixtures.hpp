@@ -32,7 +32,6 @@ inline ElementArt starElement(const std::string& name) {
   Shape s;
   s.subpaths = {Subpath{starRing({50, 50}, 45, 22, 5), true}};
   s.fill = Color{230, 170, 30, 1.0};
-  s.tag = "path";
   ElementArt e;
   e.source = name;
   e.name = name;

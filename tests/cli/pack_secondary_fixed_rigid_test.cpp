@@ -62,8 +62,8 @@ TEST(CliPackSecondary, SecondPassFillsPocketsAroundUntouchedFixedElements) {
   ASSERT_EQ(other.exitCode, 0) << other.err;
   EXPECT_FALSE(fixedLayer(svg).empty());
   EXPECT_EQ(fixedLayer(svg), fixedLayer(readWholeFile(dir.file("other.svg"))));
-  pak::Scene input = pak::loadScene(std::string(PAK_SOURCE_DIR) + "/examples/fixed-scene.svg");
-  pak::Scene output = pak::loadScene(dir.file("out.svg"));
+  pak::Scene input = pak::loadScene(std::string(PAK_SOURCE_DIR) + "/examples/fixed-scene.svg").scene;
+  pak::Scene output = pak::loadScene(dir.file("out.svg")).scene;
   ASSERT_EQ(output.fixed.size(), input.fixed.size());
   for (std::size_t i = 0; i < input.fixed.size(); ++i) {
     EXPECT_EQ(output.fixed[i].fill, input.fixed[i].fill) << i;
@@ -142,7 +142,7 @@ TEST(CliPackFixed, InkscapeFixedLayerIsCopiedByteForByteAndNeverOverlapped) {
   EXPECT_NE(svg.find("xmlns:sodipodi="), std::string::npos);
 
   // Read back: the same fixed shapes, and no element on them (checked here, not by pak).
-  pak::Scene input = pak::loadScene(scene), output = pak::loadScene(out);
+  pak::Scene input = pak::loadScene(scene).scene, output = pak::loadScene(out).scene;
   ASSERT_EQ(output.fixed.size(), input.fixed.size());
   std::vector<pak::Region> fixedArt;
   for (std::size_t i = 0; i < input.fixed.size(); ++i) {

@@ -58,7 +58,6 @@ Scene rectangleScene() {
   Scene scene;
   scene.source = "test";
   scene.container = Region{Polygon{box(0, 0, 400, 200), {}}};
-  scene.viewBox = bounds(scene.container);
   scene.guides.push_back({{10, 100}, {390, 100}});
   return scene;
 }

@@ -122,7 +122,7 @@ RepulsionOptions shortRun() {
 }  // namespace
 
 TEST(Golden, ExampleFish) {
-  const Scene scene = loadScene(kExamples + "/scene.svg");
+  const Scene scene = loadScene(kExamples + "/scene.svg").scene;
   const Library library = loadLibrary({kExamples + "/elements"});
   check("example-fish", goldenOf(packRepulsion(scene, library, shortRun())));
 }
@@ -135,7 +135,7 @@ TEST(Golden, Tile) {
 }
 
 TEST(Golden, SecondaryPass) {
-  const Scene scene = loadScene(kExamples + "/scene.svg");
+  const Scene scene = loadScene(kExamples + "/scene.svg").scene;
   const Library library = loadLibrary({kExamples + "/elements"});
   const Library secondary = loadLibrary({kExamples + "/elements/star.svg"});
   RepulsionOptions options = shortRun();
@@ -146,7 +146,7 @@ TEST(Golden, SecondaryPass) {
 TEST(Golden, ShortSpacetimeRun) {
   const std::string dir = kExamples + "/animate/stars";
   const AnimationScript script = readAnimationScript(dir + "/stars.json");
-  const Scene scene = loadScene(dir + "/disc.svg");
+  const Scene scene = loadScene(dir + "/disc.svg").scene;
   Library library;
   for (const AnimatedElementSpec& spec : script.elements) library.push_back(loadLibrary({spec.svg}).front());
   AnimationOptions options;

@@ -46,7 +46,7 @@ pak::Drawing squareFrame(double x, pak::Color colour = kRed) {
   elements.id = "elements";
   pak::DrawingGroup element;
   element.cssClass = "element";
-  pak::Shape square;
+  pak::DrawnShape square;
   square.subpaths = {rectangle(x, 15, x + 20, 35)};
   square.fill = colour;
   element.shapes.push_back(square);
@@ -265,7 +265,7 @@ TEST_F(AnimationOutputTest, AnimatedSvgCoordinatesFollowTheViewBoxSize) {
   for (pak::Drawing& frame : frames) {  // the same picture in a unit box
     frame.viewBox = {{0, 0}, {1, 0.5}};
     for (pak::DrawingGroup* group : {&frame.groups[0], &frame.groups[1].children[0]})
-      for (pak::Shape& shape : group->shapes)
+      for (pak::DrawnShape& shape : group->shapes)
         for (pak::Subpath& subpath : shape.subpaths)
           for (pak::Vec2& p : subpath.points) p = p * (1.0 / 100.0) + pak::Vec2{0.0012345, 0.0};
   }
@@ -376,7 +376,7 @@ TEST_F(AnimationOutputTest, GifOfManyColoursKeepsThemClose) {
   drawing.viewBox = {{0, 0}, {400, 10}};
   pak::DrawingGroup bars;
   for (int i = 0; i < 400; ++i) {
-    pak::Shape bar;
+    pak::DrawnShape bar;
     bar.subpaths = {rectangle(i, 0, i + 1, 10)};
     bar.fill = pak::Color{static_cast<std::uint8_t>(i * 255 / 399), static_cast<std::uint8_t>(255 - i * 255 / 399),
                           static_cast<std::uint8_t>((i * 7) % 256), 1.0};

@@ -14,12 +14,14 @@ SvgDocument elementSvg(const std::string& body, const std::string& name = "fish.
 }
 
 TEST(ElementHandles, HandleShapesBecomePointsNotArt) {
-  const ElementArt element = elementFromDocument(elementSvg(R"~(
+  const LoadedElement loaded = elementFromDocument(elementSvg(R"~(
       <rect x="0" y="0" width="40" height="20" fill="orange"/>
       <circle id="handle-tail" cx="35" cy="10" r="2" fill="red"/>
       <rect id="Handle-Head" x="2" y="4" width="4" height="6" fill="blue"/>)~"));
+  const ElementArt& element = loaded.element;
   ASSERT_EQ(element.shapes.size(), 1u);  // only the body is art
-  EXPECT_EQ(element.shapes.front().tag, "rect");
+  ASSERT_EQ(loaded.shapes.size(), 1u);
+  EXPECT_EQ(loaded.shapes.front().tag, "rect");
   // The outline is the body alone: the handles stick out of nothing, and add no area.
   EXPECT_NEAR(area(element.outline), 800.0, 1e-6);
   ASSERT_EQ(element.handles.size(), 2u);
@@ -31,15 +33,15 @@ TEST(ElementHandles, HandleShapesBecomePointsNotArt) {
 }
 
 TEST(ElementHandles, NoHandles) {
-  const ElementArt element = elementFromDocument(elementSvg(R"~(<rect id="handle" width="4" height="4"/>)~"));
+  const ElementArt element = elementFromDocument(elementSvg(R"~(<rect id="handle" width="4" height="4"/>)~")).element;
   EXPECT_TRUE(element.handles.empty());  // "handle" alone is an ordinary id
   EXPECT_EQ(element.shapes.size(), 1u);
 }
 
 TEST(ElementHandles, PerGroupInAMultiElementFile) {
-  const Library library = elementsFromDocument(elementSvg(R"~(
+  const Library library = libraryOf(elementsFromDocument(elementSvg(R"~(
       <g id="a"><rect width="10" height="10"/><circle id="handle-tip" cx="10" cy="5" r="1"/></g>
-      <g id="b"><rect x="20" width="10" height="10"/><circle id="handle-tip" cx="30" cy="5" r="1"/></g>)~"));
+      <g id="b"><rect x="20" width="10" height="10"/><circle id="handle-tip" cx="30" cy="5" r="1"/></g>)~")));
   ASSERT_EQ(library.size(), 2u);
   ASSERT_EQ(library[0].handles.size(), 1u);
   ASSERT_EQ(library[1].handles.size(), 1u);
@@ -59,8 +61,7 @@ std::string errorOf(const std::string& body) {
 TEST(ElementHandles, Errors) {
   const std::string twice = errorOf(R"~(<rect width="10" height="10"/>
       <circle id="handle-tail" cx="1" cy="1" r="1"/><circle id="handle-tail" cx="5" cy="5" r="1"/>)~");
-  EXPECT_NE(twice.find("fish.svg"), std::string::npos) << twice;
-  EXPECT_NE(twice.find("handle \"tail\" is given twice"), std::string::npos) << twice;
+  EXPECT_NE(twice.find("fish.svg:2: handle \"tail\" is given twice"), std::string::npos) << twice;
   const std::string unnamed = errorOf(R"~(<rect width="10" height="10"/><circle id="handle-" cx="1" cy="1" r="1"/>)~");
   EXPECT_NE(unnamed.find("needs a name"), std::string::npos) << unnamed;
 }

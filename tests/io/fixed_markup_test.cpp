@@ -45,9 +45,9 @@ std::string inkscapeScene() {
 )~";
 }
 
-std::vector<Shape> fixedShapes(const SvgDocument& document) {
-  std::vector<Shape> fixed;
-  for (const Shape& shape : document.shapes)
+std::vector<SvgShape> fixedShapes(const SvgDocument& document) {
+  std::vector<SvgShape> fixed;
+  for (const SvgShape& shape : document.shapes)
     if (shape.layer == "fixed") fixed.push_back(shape);
   return fixed;
 }
@@ -75,11 +75,11 @@ TEST(FixedMarkup, ReaderKeepsTheLayerSourceItsDefinitionsAndNamespaces) {
 
 TEST(FixedMarkup, WriterCopiesItVerbatimAndItReadsBackAsTheSameShapes) {
   SvgDocument input = readSvgString(inkscapeScene(), "scene.svg");
-  const std::vector<Shape> fixed = fixedShapes(input);
+  const std::vector<SvgShape> fixed = fixedShapes(input);
   ASSERT_EQ(fixed.size(), 2u);
   Drawing drawing;
   drawing.viewBox = input.viewBox;
-  DrawingGroup group{"fixed", "", {}, fixed, {}};
+  DrawingGroup group{"fixed", "", {}, drawnShapes(fixed), {}};
   group.markup = input.fixedMarkup;
   drawing.groups.push_back(group);
   drawing.groups.push_back({"elements", "", {}, {}, {}});
@@ -90,7 +90,7 @@ TEST(FixedMarkup, WriterCopiesItVerbatimAndItReadsBackAsTheSameShapes) {
   EXPECT_EQ(svg.find("xmlns:inkscape", svg.find("xmlns:inkscape") + 1), std::string::npos);  // declared once
 
   SvgDocument output = readSvgString(svg, "out.svg");  // throws on malformed XML
-  const std::vector<Shape> back = fixedShapes(output);
+  const std::vector<SvgShape> back = fixedShapes(output);
   ASSERT_EQ(back.size(), fixed.size());
   for (std::size_t i = 0; i < fixed.size(); ++i) {
     EXPECT_EQ(back[i].fill, fixed[i].fill) << i;  // the gradient resolves the same way
@@ -115,7 +115,7 @@ TEST(FixedMarkup, ConflictingPrefixIsDeclaredOnTheCopyItself) {
   ASSERT_FALSE(input.fixedMarkup.empty());
   Drawing drawing;
   drawing.viewBox = input.viewBox;
-  DrawingGroup group{"fixed", "", {}, fixedShapes(input), {}};
+  DrawingGroup group{"fixed", "", {}, drawnShapes(fixedShapes(input)), {}};
   group.markup = input.fixedMarkup;
   drawing.groups.push_back(group);
   const std::string out = toSvgString(drawing);

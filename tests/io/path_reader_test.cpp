@@ -31,7 +31,9 @@ TEST(PathReader, PathsColoursAndTypes) {
       "0 0 3 1 9 9 1\n";
   SvgDocument document = readPathString(text, "scene.path");
   ASSERT_EQ(document.shapes.size(), 5u);
-  const Shape& boundary = document.shapes[0];
+  const SvgShape& boundary = document.shapes[0];
+  EXPECT_EQ(boundary.line, 4);  // each shape knows its line, for messages
+  EXPECT_EQ(document.shapes[1].line, 5);
   EXPECT_EQ(boundary.tag, "path-file");
   EXPECT_EQ(boundary.layer, "");
   EXPECT_EQ(*boundary.fill, (Color{255, 255, 255, 1.0}));
@@ -39,12 +41,12 @@ TEST(PathReader, PathsColoursAndTypes) {
   EXPECT_TRUE(boundary.subpaths[0].closed);
   EXPECT_NEAR(area(filledRegion(boundary)), 100.0, 1e-9);
 
-  const Shape& hole = document.shapes[1];
+  const SvgShape& hole = document.shapes[1];
   EXPECT_EQ(hole.layer, "holes");
   EXPECT_FALSE(hole.fill);
   EXPECT_EQ(*hole.stroke, (Color{0, 0, 0, 1.0}));
 
-  const Shape& focal = document.shapes[2];
+  const SvgShape& focal = document.shapes[2];
   EXPECT_EQ(focal.layer, "fixed");
   EXPECT_EQ(*focal.fill, (Color{240, 100, 101, 1.0}));
   EXPECT_EQ(focal.subpaths[0].points.size(), 3u);  // repeated first point dropped

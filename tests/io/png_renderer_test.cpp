@@ -66,7 +66,7 @@ pak::Subpath square(double x0, double y0, double x1, double y1, bool clockwise =
   return subpath;
 }
 
-pak::Drawing drawingOf(std::vector<pak::Shape> shapes, pak::Box viewBox = {{0, 0}, {100, 100}}) {
+pak::Drawing drawingOf(std::vector<pak::DrawnShape> shapes, pak::Box viewBox = {{0, 0}, {100, 100}}) {
   pak::Drawing drawing;
   drawing.viewBox = viewBox;
   pak::DrawingGroup group;
@@ -76,8 +76,8 @@ pak::Drawing drawingOf(std::vector<pak::Shape> shapes, pak::Box viewBox = {{0, 0
   return drawing;
 }
 
-pak::Shape filled(std::vector<pak::Subpath> subpaths, pak::Color color, pak::FillRule rule = pak::FillRule::NonZero) {
-  pak::Shape shape;
+pak::DrawnShape filled(std::vector<pak::Subpath> subpaths, pak::Color color, pak::FillRule rule = pak::FillRule::NonZero) {
+  pak::DrawnShape shape;
   shape.subpaths = std::move(subpaths);
   shape.fill = color;
   shape.fillRule = rule;
@@ -161,7 +161,7 @@ TEST_F(PngRendererTest, CustomBackground) {
 TEST_F(PngRendererTest, EvenOddRingHasABackgroundCentre) {
   std::string path = file("ring.png");
   // Both squares wind the same way: only the even-odd rule makes the inner one a hole.
-  pak::Shape ring = filled({square(10, 10, 90, 90), square(30, 30, 70, 70)}, kBlue, pak::FillRule::EvenOdd);
+  pak::DrawnShape ring = filled({square(10, 10, 90, 90), square(30, 30, 70, 70)}, kBlue, pak::FillRule::EvenOdd);
   pak::writePngFile(drawingOf({ring}), path, {.width = 100});
   Image image = readPng(path);
   EXPECT_TRUE(isColor(image.at(50, 50), 255, 255, 255));
@@ -179,7 +179,7 @@ TEST_F(PngRendererTest, NonZeroRuleFollowsWindingDirection) {
 
 TEST_F(PngRendererTest, StrokeOnlyShape) {
   std::string path = file("stroke.png");
-  pak::Shape outline;
+  pak::DrawnShape outline;
   outline.subpaths = {square(20, 20, 80, 80)};
   outline.stroke = kRed;
   outline.strokeWidth = 8;
@@ -198,7 +198,7 @@ TEST_F(PngRendererTest, TranslucentFillBlendsWithTheBackground) {
 
 TEST_F(PngRendererTest, ShapeOpacityFadesFillAndStrokeTogether) {
   std::string path = file("opacity.png");
-  pak::Shape shape = filled({square(20, 20, 80, 80)}, kRed);
+  pak::DrawnShape shape = filled({square(20, 20, 80, 80)}, kRed);
   shape.stroke = kBlue;
   shape.strokeWidth = 10;
   shape.opacity = 0.5;

@@ -70,39 +70,45 @@ const std::string kSquare = R"~(<svg xmlns="http://www.w3.org/2000/svg" viewBox=
 // ---- scenes ------------------------------------------------------------------------------
 
 TEST(SceneLoader, LayersBecomeContainerFixedGuidesSpines) {
-  Scene scene = sceneFromDocument(svgDocument(R"~(
+  const LoadedScene loaded = sceneFromDocument(svgDocument(R"~(
       <g id="container"><path d="M0 0 H100 V100 H0 Z M20 20 V40 H40 V20 Z" fill="none" stroke="black"/></g>
       <g inkscape:label="Fixed" xmlns:inkscape="http://www.inkscape.org/namespaces/inkscape">
         <circle cx="70" cy="70" r="5" fill="red"/></g>
       <g id="guides"><path d="M10 90 L90 90" stroke="blue"/></g>
       <g id="spines"><path d="M50 10 L50 30" stroke="blue"/></g>)~"));
-  EXPECT_EQ(scene.containerShapes.size(), 1u);
+  const Scene& scene = loaded.scene;
+  ASSERT_EQ(loaded.layout.containerShapes.size(), 1u);
+  EXPECT_TRUE(loaded.layout.containerShapes[0].keepsPaint);  // on a container layer: drawn as styled
   EXPECT_NEAR(area(scene.container), 100 * 100 - 20 * 20, 1e-6);
   ASSERT_EQ(scene.container.size(), 1u);
   EXPECT_EQ(scene.container[0].holes.size(), 1u);
   EXPECT_EQ(scene.fixed.size(), 1u);
+  EXPECT_EQ(loaded.layout.fixedShapes.size(), 1u);
   ASSERT_EQ(scene.guides.size(), 1u);
   EXPECT_EQ(scene.guides[0].size(), 2u);
   EXPECT_EQ(scene.spines.size(), 1u);
-  EXPECT_DOUBLE_EQ(scene.viewBox.width(), 100.0);
+  EXPECT_DOUBLE_EQ(loaded.layout.viewBox.width(), 100.0);
 }
 
 TEST(SceneLoader, SeveralDisjointContainerShapes) {
-  Scene scene = sceneFromDocument(svgDocument(R"~(<g id="container">
-      <rect x="0" y="0" width="10" height="10"/><rect x="50" y="50" width="20" height="10"/></g>)~"));
+  const Scene scene = sceneFromDocument(svgDocument(R"~(<g id="container">
+      <rect x="0" y="0" width="10" height="10"/><rect x="50" y="50" width="20" height="10"/></g>)~")).scene;
   EXPECT_EQ(scene.container.size(), 2u);
   EXPECT_NEAR(area(scene.container), 300.0, 1e-6);
 }
 
 TEST(SceneLoader, AFileWithoutLayersIsAContainerByItself) {
-  Scene scene = sceneFromDocument(svgDocument(R"~(<circle cx="50" cy="50" r="40"/>)~"));
-  EXPECT_NEAR(area(scene.container), 3.14159265 * 1600, 3.14159265 * 1600 * 2e-3);
+  const LoadedScene loaded = sceneFromDocument(svgDocument(R"~(<circle id="icon" cx="50" cy="50" r="40"/>)~"));
+  EXPECT_NEAR(area(loaded.scene.container), 3.14159265 * 1600, 3.14159265 * 1600 * 2e-3);
+  ASSERT_EQ(loaded.layout.containerShapes.size(), 1u);
+  EXPECT_EQ(loaded.layout.containerShapes[0].shape.id, "icon");
+  EXPECT_FALSE(loaded.layout.containerShapes[0].keepsPaint);  // drawn as an outline
 }
 
 TEST(SceneLoader, PathFileContainerIsBoundaryMinusHoles) {
   SvgDocument document = readPathString(
       "1\n0 1 0 0 0 100 0 100 100 0 100\n0 1 7 10 10 30 10 30 30 10 30\n0 1 2 60 60 70 60 70 70\n", "holes.path");
-  Scene scene = sceneFromDocument(document);
+  const Scene scene = sceneFromDocument(document).scene;
   EXPECT_NEAR(area(scene.container), 10000 - 400, 1e-6);
   EXPECT_EQ(scene.fixed.size(), 1u);
 }
@@ -111,8 +117,14 @@ TEST(SceneLoaderErrors, UnclosedContainerPath) {
   const std::string message = errorOf([] {
     sceneFromDocument(svgDocument(R"~(<g id="container"><path id="outline" d="M0 0 L50 0 L50 50"/></g>)~", "open.svg"));
   });
-  EXPECT_NE(message.find("open.svg"), std::string::npos) << message;
-  EXPECT_NE(message.find("container path 'outline' is not closed"), std::string::npos) << message;
+  EXPECT_NE(message.find("open.svg:1: container path 'outline' is not closed"), std::string::npos) << message;
+}
+
+TEST(SceneLoaderErrors, BadContainerAttributesNameTheShapesLine) {
+  const std::string message = errorOf([] {
+    sceneFromDocument(svgDocument("<g id=\"container\">\n  <rect width=\"10\" height=\"10\" data-gap=\"dense\"/></g>"));
+  });
+  EXPECT_NE(message.find("scene.svg:2: data-gap=\"dense\" must be a positive number"), std::string::npos) << message;
 }
 
 TEST(SceneLoaderErrors, NoUsableContainer) {
@@ -131,13 +143,16 @@ TEST(SceneLoaderErrors, NoUsableContainer) {
 // ---- elements ----------------------------------------------------------------------------
 
 TEST(ElementLoader, OutlineIsTheUnionOfEverythingPaintedWithHoles) {
-  ElementArt element = elementFromDocument(svgDocument(R"~(
+  const LoadedElement loaded = elementFromDocument(svgDocument(R"~(
       <path d="M0 0 H10 V10 H0 Z M3 3 H7 V7 H3 Z" fill-rule="evenodd" fill="green"/>
       <path d="M20 0 L30 0" stroke="black" stroke-width="2" fill="none"/>
       <path id="spine" d="M0 5 L30 5" stroke="red"/>)~", "leaf.svg"));
+  const ElementArt& element = loaded.element;
   EXPECT_EQ(element.name, "leaf");
   EXPECT_EQ(element.source, "leaf.svg");
   EXPECT_EQ(element.shapes.size(), 2u);  // the spine is not art
+  ASSERT_EQ(loaded.shapes.size(), 2u);   // the same shapes with their SVG attributes
+  EXPECT_EQ(loaded.shapes[0].tag, "path");
   ASSERT_TRUE(element.spine);
   EXPECT_EQ((*element.spine)[0], (Vec2{0, 5}));
   EXPECT_EQ((*element.spine)[1], (Vec2{30, 5}));
@@ -149,13 +164,13 @@ TEST(ElementLoader, OutlineIsTheUnionOfEverythingPaintedWithHoles) {
 }
 
 TEST(ElementLoader, WarnsAboutZeroAreaPathsAndOpenFills) {
-  ElementArt element = elementFromDocument(svgDocument(R"~(
+  const LoadedElement element = elementFromDocument(svgDocument(R"~(
       <path id="body" d="M0 0 H10 V10 H0 Z"/>
       <path id="flat" d="M0 20 L10 20 L20 20 Z"/>
       <path id="open" d="M20 0 L30 0 L30 10"/>)~"));
   EXPECT_TRUE(hasWarning(element.warnings, "flat: path paints no area")) << element.warnings.size();
   EXPECT_TRUE(hasWarning(element.warnings, "open: open path used as a fill"));
-  EXPECT_NEAR(area(element.outline), 100 + 50, 1e-3);
+  EXPECT_NEAR(area(element.element.outline), 100 + 50, 1e-3);
 }
 
 TEST(ElementLoaderErrors, ZeroAreaElement) {
@@ -168,19 +183,20 @@ TEST(ElementLoaderErrors, ZeroAreaElement) {
 }
 
 TEST(ElementLoader, TopLevelGroupsAreSeparateElements) {
-  Library library = elementsFromDocument(svgDocument(R"~(
+  const std::vector<LoadedElement> library = elementsFromDocument(svgDocument(R"~(
       <g id="Leaf"><rect width="10" height="10" fill="green"/></g>
       <g id="fish"><circle cx="50" cy="50" r="5"/><circle cx="60" cy="50" r="2" fill="white"/></g>
       <g id="empty"><path d="M0 0 L1 0"/></g>)~", "library.svg"));
   ASSERT_EQ(library.size(), 2u);
-  EXPECT_EQ(library[0].name, "leaf");
-  EXPECT_EQ(library[0].shapes.size(), 1u);
-  EXPECT_EQ(library[1].name, "fish");
-  EXPECT_EQ(library[1].shapes.size(), 2u);
+  EXPECT_EQ(library[0].element.name, "leaf");
+  EXPECT_EQ(library[0].element.shapes.size(), 1u);
+  EXPECT_EQ(library[1].element.name, "fish");
+  EXPECT_EQ(library[1].element.shapes.size(), 2u);
   // One group (an Inkscape layer around everything) is one element named after the file.
-  Library single = elementsFromDocument(svgDocument(R"~(<g id="layer1"><rect width="1" height="1"/></g>)~", "one.svg"));
+  const std::vector<LoadedElement> single =
+      elementsFromDocument(svgDocument(R"~(<g id="layer1"><rect width="1" height="1"/></g>)~", "one.svg"));
   ASSERT_EQ(single.size(), 1u);
-  EXPECT_EQ(single[0].name, "one");
+  EXPECT_EQ(single[0].element.name, "one");
 }
 
 TEST(ElementLoader, LibraryFromFilesAndFolders) {

@@ -47,11 +47,11 @@ TEST(SharedData, EveryMdiIconReadsWithArea) {
     ASSERT_GE(document.shapes.size(), 1u);
     EXPECT_TRUE(document.warnings.empty());
     // Every subpath of an icon encloses something, with or without its closing "Z".
-    for (const Shape& shape : document.shapes)
+    for (const SvgShape& shape : document.shapes)
       for (const Subpath& subpath : shape.subpaths) EXPECT_TRUE(subpath.closed);
     EXPECT_DOUBLE_EQ(document.viewBox.width(), 24.0);
     EXPECT_DOUBLE_EQ(document.viewBox.height(), 24.0);
-    ElementArt element = elementFromDocument(document);
+    ElementArt element = elementFromDocument(document).element;
     const double painted = area(element.outline);
     EXPECT_GT(painted, 1.0);
     EXPECT_LT(painted, 24.0 * 24.0);
@@ -62,7 +62,7 @@ TEST(SharedData, MdiCatHasItsEyesAsHoles) {
   SKIP_WITHOUT_SHARED_DATA();
   SvgDocument document = readSvgFile((kSharedData / "mdi" / "cat.svg").string());
   ASSERT_EQ(document.shapes.size(), 1u);
-  const Shape& cat = document.shapes[0];
+  const SvgShape& cat = document.shapes[0];
   // Head outline, two eyes, and the nose-and-mouth.
   EXPECT_EQ(cat.subpaths.size(), 4u);
   for (const Subpath& subpath : cat.subpaths) EXPECT_TRUE(subpath.closed);
@@ -93,14 +93,14 @@ TEST(SharedData, RepulsionPakFilesHaveTheirPathCounts) {
     ASSERT_TRUE(expected.count(key));
     EXPECT_EQ(document.shapes.size(), expected.at(key));
     EXPECT_TRUE(document.warnings.empty());
-    for (const Shape& shape : document.shapes) {
+    for (const SvgShape& shape : document.shapes) {
       ASSERT_EQ(shape.subpaths.size(), 1u);
       EXPECT_TRUE(shape.subpaths[0].closed);
       EXPECT_GT(area(filledRegion(shape)), 0.0);
     }
     if (key.rfind("animals/", 0) == 0 || key.rfind("small_cat/", 0) == 0) {
       // The silhouette (last in the file, drawn first) covers the details.
-      ElementArt element = elementFromDocument(document);
+      ElementArt element = elementFromDocument(document).element;
       EXPECT_NEAR(area(element.outline), area(filledRegion(document.shapes.front())),
                   1e-6 * area(element.outline));
     }
@@ -122,7 +122,7 @@ TEST(SharedData, SnakeSilhouetteComesOutClosedAndFilled) {
   SKIP_WITHOUT_SHARED_DATA();
   SvgDocument document = readPathFile((kSharedData / "repulsionpak" / "animals" / "snake.path").string());
   ASSERT_EQ(document.shapes.size(), 3u);
-  const Shape& silhouette = document.shapes.front();
+  const SvgShape& silhouette = document.shapes.front();
   EXPECT_TRUE(silhouette.subpaths[0].closed);
   EXPECT_EQ(silhouette.subpaths[0].points.size(), 552u);  // 553 stored, the first repeated
   EXPECT_TRUE(silhouette.fill);
@@ -131,17 +131,18 @@ TEST(SharedData, SnakeSilhouetteComesOutClosedAndFilled) {
 
 TEST(SharedData, HeartContainerArea) {
   SKIP_WITHOUT_SHARED_DATA();
-  Scene scene = loadScene((kSharedData / "repulsionpak" / "containers" / "heart.path").string());
-  ASSERT_EQ(scene.containerShapes.size(), 1u);
-  EXPECT_EQ(scene.containerShapes[0].subpaths[0].points.size(), 56u);  // 57 stored, first repeated
-  EXPECT_NEAR(area(scene.container), 122440.0, 0.01 * 122440.0);
-  EXPECT_EQ(scene.container.size(), 1u);
-  EXPECT_DOUBLE_EQ(scene.viewBox.width(), 500.0);
+  const LoadedScene heart = loadScene((kSharedData / "repulsionpak" / "containers" / "heart.path").string());
+  ASSERT_EQ(heart.layout.containerShapes.size(), 1u);
+  EXPECT_EQ(heart.layout.containerShapes[0].shape.subpaths[0].points.size(), 56u);  // 57 stored, first repeated
+  EXPECT_FALSE(heart.layout.containerShapes[0].keepsPaint);  // a container by itself: drawn as an outline
+  EXPECT_NEAR(area(heart.scene.container), 122440.0, 0.01 * 122440.0);
+  EXPECT_EQ(heart.scene.container.size(), 1u);
+  EXPECT_DOUBLE_EQ(heart.layout.viewBox.width(), 500.0);
 }
 
 TEST(SharedData, MdiHeartIsAContainerByItself) {
   SKIP_WITHOUT_SHARED_DATA();
-  Scene scene = loadScene((kSharedData / "mdi" / "heart.svg").string());
+  Scene scene = loadScene((kSharedData / "mdi" / "heart.svg").string()).scene;
   EXPECT_GT(area(scene.container), 100.0);
 }
 

@@ -296,19 +296,19 @@ TEST(SvgReaderPaint, ColoursFromAttributesStyleAndGroups) {
         <g fill="none"><rect id="none" width="1" height="1" stroke="none"/></g></g>
       <g color="#123456"><rect id="current" width="1" height="1" fill="currentColor"/></g>)~");
   ASSERT_EQ(document.shapes.size(), 5u);
-  const Shape& attr = document.shapes[0];
+  const SvgShape& attr = document.shapes[0];
   EXPECT_EQ(attr.id, "attr");
   EXPECT_EQ(*attr.fill, (Color{255, 128, 0, 1.0}));
   EXPECT_EQ(*attr.stroke, (Color{1, 2, 3, 1.0}));
   EXPECT_DOUBLE_EQ(attr.strokeWidth, 3.0);
-  const Shape& style = document.shapes[1];
+  const SvgShape& style = document.shapes[1];
   EXPECT_EQ(*style.fill, (Color{0, 255, 0, 1.0}));
   EXPECT_EQ(*style.stroke, (Color{0, 0, 255, 1.0}));
-  const Shape& inherited = document.shapes[2];
+  const SvgShape& inherited = document.shapes[2];
   EXPECT_EQ(*inherited.fill, (Color{0, 0, 128, 1.0}));
   EXPECT_EQ(*inherited.stroke, (Color{0xaa, 0xbb, 0xcc, 1.0}));
   EXPECT_DOUBLE_EQ(inherited.strokeWidth, 2.0);
-  const Shape& none = document.shapes[3];
+  const SvgShape& none = document.shapes[3];
   EXPECT_FALSE(none.fill);
   EXPECT_FALSE(none.stroke);
   EXPECT_EQ(*document.shapes[4].fill, (Color{0x12, 0x34, 0x56, 1.0}));
@@ -318,7 +318,7 @@ TEST(SvgReaderPaint, OpacitiesMultiplyDownTheTree) {
   SvgDocument document = read(R"~(<g opacity="0.5"><g style="opacity:0.5">
       <rect width="1" height="1" opacity="0.8" fill-opacity="0.25" stroke="red" stroke-opacity="0.75"/></g></g>)~");
   ASSERT_EQ(document.shapes.size(), 1u);
-  const Shape& shape = document.shapes[0];
+  const SvgShape& shape = document.shapes[0];
   EXPECT_NEAR(shape.opacity, 0.2, 1e-12);
   EXPECT_NEAR(shape.fill->alpha, 0.25, 1e-12);
   EXPECT_NEAR(shape.stroke->alpha, 0.75, 1e-12);
@@ -511,6 +511,19 @@ TEST(SvgReaderErrors, AbsurdCoordinateNamesTheElement) {
   const std::string scaled = errorOf(svg(R"~(<g transform="scale(1e8)"><rect width="100" height="1"/></g>)~"));
   EXPECT_NE(scaled.find("<rect>"), std::string::npos) << scaled;
   EXPECT_NE(scaled.find("absurd"), std::string::npos) << scaled;
+}
+
+TEST(SvgReaderErrors, ErrorsAndShapesNameTheirLine) {
+  const std::string text = "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 10 10\">\n"
+                           "  <rect id=\"fine\" width=\"1\" height=\"1\"/>\n"
+                           "  <path id=\"far\"\n        d=\"M0 0 L 1e12 5 L0 5 Z\"/>\n</svg>\n";
+  const std::string message = errorOf(text, "lines.svg");
+  EXPECT_NE(message.find("lines.svg:3: <path id=\"far\">: absurd coordinate"), std::string::npos) << message;
+  const std::string garbage = errorOf("<svg xmlns=\"http://www.w3.org/2000/svg\">\n\n<path id=\"p\" d=\"M0 0 L 5 x Z\"/></svg>");
+  EXPECT_NE(garbage.find("bad.svg:3: <path id=\"p\">: attribute d="), std::string::npos) << garbage;
+  SvgDocument document = readSvgString(text.substr(0, text.find("  <path")) + "</svg>", "fine.svg");
+  ASSERT_EQ(document.shapes.size(), 1u);
+  EXPECT_EQ(document.shapes[0].line, 2);
 }
 
 TEST(SvgReaderErrors, GarbagePathData) {

@@ -32,7 +32,7 @@ pak::Drawing sampleDrawing() {
 
   pak::DrawingGroup container;
   container.id = "container";
-  pak::Shape outline;
+  pak::DrawnShape outline;
   outline.subpaths = {rectangle(10, 10, 190, 90), rectangle(80, 40, 120, 60)};
   outline.fill = pak::Color{220, 235, 245, 1.0};
   outline.stroke = pak::Color{43, 95, 128, 1.0};
@@ -45,12 +45,12 @@ pak::Drawing sampleDrawing() {
   pak::DrawingGroup element;
   element.cssClass = "element";
   element.attributes = {{"data-source", "examples/elements/leaf.svg"}};
-  pak::Shape body;
+  pak::DrawnShape body;
   body.id = "body";
   body.subpaths = {{{{20, 20}, {40, 20}, {30, 35}}, true}};
   body.fill = pak::Color{90, 168, 71, 0.5};
   body.opacity = 0.75;
-  pak::Shape vein;
+  pak::DrawnShape vein;
   vein.subpaths = {{{{22, 22}, {30, 30}, {38, 22}}, false}};
   vein.stroke = pak::Color{47, 107, 42, 1.0};
   vein.strokeWidth = 1.5;
@@ -145,7 +145,7 @@ TEST(SvgWriter, NumbersUseTheRequestedPrecision) {
   pak::Drawing drawing;
   drawing.viewBox = {{0, 0}, {10, 10}};
   pak::DrawingGroup group;
-  pak::Shape shape;
+  pak::DrawnShape shape;
   shape.fill = pak::Color{};
   shape.subpaths = {{{{1.23456, -0.0001}, {2.5, 3.0}, {-1.9999, 7.126}}, true}};
   group.shapes.push_back(shape);
@@ -199,7 +199,7 @@ TEST(SvgWriter, EmptyShapesAndGroupsDoNotProduceEmptyPaths) {
   drawing.viewBox = {{0, 0}, {1, 1}};
   pak::DrawingGroup group;
   group.id = "nothing";
-  group.shapes.push_back(pak::Shape{});
+  group.shapes.push_back(pak::DrawnShape{});
   drawing.groups.push_back(group);
   std::string text = pak::toSvgString(drawing);
   EXPECT_EQ(text.find("<path"), std::string::npos);
@@ -265,7 +265,7 @@ TEST_F(SvgFileTest, BadDrawingLeavesTheOldFileAlone) {
 // --- Round trip through Pak's reader -------------------------------------------------------
 
 // Shapes in document order, whatever the nesting.
-const pak::Shape* findShape(const pak::SvgDocument& document, const std::string& id) {
+const pak::SvgShape* findShape(const pak::SvgDocument& document, const std::string& id) {
   for (const auto& shape : document.shapes)
     if (shape.id == id) return &shape;
   return nullptr;
@@ -295,7 +295,7 @@ TEST(SvgWriterRoundTrip, ReaderSeesTheSameShapesColoursAndLayers) {
   ASSERT_FALSE(document.layers.empty());
   EXPECT_EQ(document.layers[0], "container");
 
-  const pak::Shape* outline = findShape(document, "outline");
+  const pak::SvgShape* outline = findShape(document, "outline");
   ASSERT_NE(outline, nullptr);
   const pak::Shape& writtenOutline = drawing.groups[0].shapes[0];
   ASSERT_EQ(outline->subpaths.size(), 2u);
@@ -307,7 +307,7 @@ TEST(SvgWriterRoundTrip, ReaderSeesTheSameShapesColoursAndLayers) {
   EXPECT_EQ(outline->fillRule, pak::FillRule::EvenOdd);
   EXPECT_EQ(outline->layer, "container");
 
-  const pak::Shape* body = findShape(document, "body");
+  const pak::SvgShape* body = findShape(document, "body");
   ASSERT_NE(body, nullptr);
   const pak::Shape& writtenBody = drawing.groups[1].children[0].shapes[0];
   expectSamePoints(writtenBody.subpaths[0], body->subpaths[0], 0.0005 + 1e-9);
@@ -322,7 +322,7 @@ TEST(SvgWriterRoundTrip, ReaderSeesTheSameShapesColoursAndLayers) {
   EXPECT_EQ(body->fillRule, pak::FillRule::NonZero);
   EXPECT_EQ(body->layer, "elements");
 
-  const pak::Shape* vein = findShape(document, "vein");
+  const pak::SvgShape* vein = findShape(document, "vein");
   ASSERT_NE(vein, nullptr);
   expectSamePoints(drawing.groups[1].children[0].shapes[1].subpaths[0], vein->subpaths[0], 1e-9);
   EXPECT_FALSE(vein->fill.has_value());
@@ -347,7 +347,7 @@ TEST(SvgWriter, CurveToleranceWritesCubicBeziersThatReadBackAsTheSameShape) {
   drawing.viewBox = {{0, 0}, {100, 100}};
   pak::DrawingGroup group;
   group.id = "elements";
-  pak::Shape disc;
+  pak::DrawnShape disc;
   pak::Subpath ring;
   ring.closed = true;
   for (int k = 0; k < 400; ++k)

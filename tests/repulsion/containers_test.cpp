@@ -81,7 +81,7 @@ TEST(Containers, SeedsAreSharedByAreaWithOneForEveryRoomyContainer) {
 }
 
 TEST(Containers, SceneLoaderSplitsDisjointPartsAndResolvesTheirLibraries) {
-  Scene scene = loadScene(kExamples + "/rooms.svg", SceneOptions{});
+  Scene scene = loadScene(kExamples + "/rooms.svg", SceneOptions{}).scene;
   ASSERT_EQ(scene.containers.size(), 3u);
   int withHole = 0, ownLibraries = 0;
   for (const ContainerPart& part : scene.containers) {
@@ -104,11 +104,11 @@ TEST(Containers, SceneLoaderSplitsDisjointPartsAndResolvesTheirLibraries) {
   EXPECT_EQ(withHole, 1);
   EXPECT_EQ(ownLibraries, 2);
   // Without the scene options nothing is loaded, but the parts are still there.
-  EXPECT_EQ(loadScene(kExamples + "/rooms.svg").containers.size(), 3u);
+  EXPECT_EQ(loadScene(kExamples + "/rooms.svg").scene.containers.size(), 3u);
 }
 
 TEST(Containers, ElementsStayInTheirContainerOutOfHolesWithTheirOwnLibrary) {
-  Scene scene = loadScene(kExamples + "/rooms.svg", SceneOptions{});
+  Scene scene = loadScene(kExamples + "/rooms.svg", SceneOptions{}).scene;
   Library run = loadLibrary({kExamples + "/elements/cat.svg", kExamples + "/elements/mushroom.svg"});
   Packing packing = packRepulsion(scene, run, quick(13));
   ASSERT_EQ(packing.containers.size(), 3u);
@@ -150,7 +150,7 @@ TEST(Containers, PreviousPackingElementsBecomeContainers) {
         <circle cx="450" cy="200" r="30" fill="#fff"/></g>
       <g class="element" data-source="ring.svg"><circle cx="750" cy="200" r="110" fill="none" stroke="#44c" stroke-width="20"/></g>
     </g></svg>)";
-  Scene scene = sceneFromDocument(readSvgString(previous, "previous.svg"), SceneOptions{"elements"});
+  Scene scene = sceneFromDocument(readSvgString(previous, "previous.svg"), SceneOptions{"elements"}).scene;
   ASSERT_EQ(scene.containers.size(), 3u);
   // The ring's silhouette fills its middle: a disc of radius 120.
   const int ringPart = bounds(scene.containers[2].region).min.x > 600 ? 2 : (bounds(scene.containers[0].region).min.x > 600 ? 0 : 1);
@@ -168,14 +168,15 @@ TEST(Containers, PreviousPackingElementsBecomeContainers) {
 
 TEST(Containers, SingleContainerRunIsUnchangedByTheContainerList) {
   // A scene with its part list and the same scene without it give the same bytes.
-  Scene scene = loadScene(kExamples + "/scene.svg");
+  LoadedScene input = loadScene(kExamples + "/scene.svg");
+  Scene& scene = input.scene;
   Library library = loadLibrary({kExamples + "/elements"});
   RepulsionOptions options = quick(6);
   options.maxIterations = 200;
-  std::string with = toSvgString(packingDrawing(scene, packRepulsion(scene, library, options)));
+  std::string with = toSvgString(packingDrawing(input.layout, packRepulsion(scene, library, options)));
   ASSERT_EQ(scene.containers.size(), 1u);
   scene.containers.clear();
-  EXPECT_EQ(toSvgString(packingDrawing(scene, packRepulsion(scene, library, options))), with);
+  EXPECT_EQ(toSvgString(packingDrawing(input.layout, packRepulsion(scene, library, options))), with);
 }
 
 TEST(Containers, BadContainerLayerAndLibraryAreInputErrors) {
@@ -187,7 +188,8 @@ TEST(Containers, BadContainerLayerAndLibraryAreInputErrors) {
 }
 
 TEST(Containers, SeveralContainersWithAFieldAreDeterministicWhateverTheThreadCount) {
-  Scene scene = loadScene(kExamples + "/rooms.svg", SceneOptions{});
+  LoadedScene input = loadScene(kExamples + "/rooms.svg", SceneOptions{});
+  Scene& scene = input.scene;
   Library run = loadLibrary({kExamples + "/elements/cat.svg"});
   RepulsionOptions options = quick(9);
   options.maxIterations = 150;
@@ -196,7 +198,7 @@ TEST(Containers, SeveralContainersWithAFieldAreDeterministicWhateverTheThreadCou
   std::string reference;
   for (int threads : {1, 2, 3}) {
     options.threads = threads;
-    std::string svg = toSvgString(packingDrawing(scene, packRepulsion(scene, run, options)));
+    std::string svg = toSvgString(packingDrawing(input.layout, packRepulsion(scene, run, options)));
     if (reference.empty()) reference = svg;
     EXPECT_EQ(svg, reference) << "threads = " << threads;
   }

@@ -53,7 +53,8 @@ void expectNoOverlapsWithFixed(const Packing& packing) {
 }  // namespace
 
 TEST(FixedElements, AreObstaclesCopiedUnchangedAndCountedInFill) {
-  Scene scene = loadScene(kExamples + "/fixed-scene.svg");
+  LoadedScene input = loadScene(kExamples + "/fixed-scene.svg");
+  Scene& scene = input.scene;
   ASSERT_EQ(scene.fixed.size(), 3u);  // eye, pupil, gill (a stroke with no fill)
   Library library = loadLibrary({kExamples + "/elements"});
   Packing packing = packRepulsion(scene, library, quickOptions());
@@ -77,16 +78,16 @@ TEST(FixedElements, AreObstaclesCopiedUnchangedAndCountedInFill) {
 
   // The output's fixed layer is the input's, untouched: the same bytes as a drawing of the
   // scene with no elements at all, and the same geometry and paint when read back.
-  std::string svg = toSvgString(packingDrawing(scene, packing));
+  std::string svg = toSvgString(packingDrawing(input.layout, packing));
   Packing empty;
   empty.container = packing.container;
   empty.canonicalScale = packing.canonicalScale;
-  EXPECT_EQ(fixedLayer(svg), fixedLayer(toSvgString(packingDrawing(scene, empty))));
+  EXPECT_EQ(fixedLayer(svg), fixedLayer(toSvgString(packingDrawing(input.layout, empty))));
   EXPECT_FALSE(fixedLayer(svg).empty());
 }
 
 TEST(FixedElements, SecondaryPassKeepsOffThemToo) {
-  Scene scene = loadScene(kExamples + "/fixed-scene.svg");
+  Scene scene = loadScene(kExamples + "/fixed-scene.svg").scene;
   Library library = loadLibrary({kExamples + "/elements/cat.svg", kExamples + "/elements/fish.svg"});
   Library secondary = loadLibrary({kExamples + "/elements/star.svg"});
   RepulsionOptions options = quickOptions();
@@ -102,7 +103,7 @@ TEST(FixedElements, FocalPathsOfPathFilesAreFixedElements) {
   const auto file = std::filesystem::temp_directory_path() / ("pak-focal-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + ".path");
   std::ofstream(file) << "1\nforeground_color_rgb 0 0,0,0 0,0,0\nbackground_color_rgb 0 -1,-1,-1 200,30,30\n"
                          "0 1 0 0 0 1000 0 1000 1000 0 1000\n0 1 2 400 400 600 400 600 600 400 600\n";
-  Scene scene = loadScene(file.string());
+  Scene scene = loadScene(file.string()).scene;
   std::filesystem::remove(file);
   ASSERT_EQ(scene.fixed.size(), 1u);
   RepulsionOptions options = quickOptions();
@@ -115,7 +116,7 @@ TEST(FixedElements, FocalPathsOfPathFilesAreFixedElements) {
 }
 
 TEST(RigidPreset, KeepsShapesNearlyUndeformedAndOverlapFree) {
-  Scene scene = loadScene(kExamples + "/scene.svg");
+  Scene scene = loadScene(kExamples + "/scene.svg").scene;
   Library library = loadLibrary({kExamples + "/elements"});
   RepulsionOptions soft = quickOptions();
   RepulsionOptions rigid = quickOptions();

@@ -80,7 +80,7 @@ TEST(Orientation, RampIsLinearAcrossTheBoxAndClamped) {
 }
 
 TEST(Orientation, ElementsFollowTheFieldAcrossTheBand) {
-  Scene scene = loadScene(kExamples + "/band.svg");
+  Scene scene = loadScene(kExamples + "/band.svg").scene;
   Library library = loadLibrary({kExamples + "/elements/bird.svg"});
   RepulsionOptions options = quick();
   options.orientation = OrientationMode::Field;
@@ -102,7 +102,7 @@ TEST(Orientation, ElementsFollowTheFieldAcrossTheBand) {
 }
 
 TEST(Orientation, UprightHoldsTheDrawnAngleAndRandomDoesNot) {
-  Scene scene = loadScene(kExamples + "/band.svg");
+  Scene scene = loadScene(kExamples + "/band.svg").scene;
   Library library = loadLibrary({kExamples + "/elements/bird.svg"});
   RepulsionOptions options = quick();
   options.orientation = OrientationMode::Upright;

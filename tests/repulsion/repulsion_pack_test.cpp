@@ -42,7 +42,7 @@ RepulsionOptions quickOptions() {
 }  // namespace
 
 TEST(RepulsionPack, BundledExampleReachesTargetWithoutOverlaps) {
-  Scene scene = loadScene(kExamples + "/scene.svg");
+  Scene scene = loadScene(kExamples + "/scene.svg").scene;
   Library library = loadLibrary({kExamples + "/elements"});
   RepulsionOptions options = quickOptions();
   Packing packing = packRepulsion(scene, library, options);
@@ -54,23 +54,24 @@ TEST(RepulsionPack, BundledExampleReachesTargetWithoutOverlaps) {
 }
 
 TEST(RepulsionPack, SameSeedSameBytesWhateverTheThreadCount) {
-  Scene scene = loadScene(kExamples + "/scene.svg");
+  LoadedScene input = loadScene(kExamples + "/scene.svg");
+  Scene& scene = input.scene;
   Library library = loadLibrary({kExamples + "/elements"});
   RepulsionOptions options = quickOptions();
   options.maxIterations = 400;  // determinism shows early; keep it quick
   std::string reference;
   for (int threads : {1, 2, 4}) {
     options.threads = threads;
-    std::string svg = toSvgString(packingDrawing(scene, packRepulsion(scene, library, options)));
+    std::string svg = toSvgString(packingDrawing(input.layout, packRepulsion(scene, library, options)));
     if (reference.empty()) reference = svg;
     EXPECT_EQ(svg, reference) << "threads = " << threads;
   }
   options.seed = 4;
-  EXPECT_NE(toSvgString(packingDrawing(scene, packRepulsion(scene, library, options))), reference);
+  EXPECT_NE(toSvgString(packingDrawing(input.layout, packRepulsion(scene, library, options))), reference);
 }
 
 TEST(RepulsionPack, RejectsBadOptionsAndEmptyLibrary) {
-  Scene scene = loadScene(kExamples + "/scene.svg");
+  Scene scene = loadScene(kExamples + "/scene.svg").scene;
   Library library = loadLibrary({kExamples + "/elements"});
   RepulsionOptions bad;
   bad.gap = -1.0;
@@ -80,7 +81,7 @@ TEST(RepulsionPack, RejectsBadOptionsAndEmptyLibrary) {
 
 TEST(RepulsionPack, SharedAnimalsInHeart) {
   if (!fs::exists(kData + "/repulsionpak")) GTEST_SKIP() << "shared data not found at " << kData;
-  Scene scene = loadScene(kData + "/repulsionpak/containers/heart.path");
+  Scene scene = loadScene(kData + "/repulsionpak/containers/heart.path").scene;
   Library library = loadLibrary({kData + "/repulsionpak/animals"});
   RepulsionOptions options;
   options.count = 27;
@@ -91,7 +92,7 @@ TEST(RepulsionPack, SharedAnimalsInHeart) {
 
 TEST(RepulsionPack, SharedMdiAnimalsInMdiHeart) {
   if (!fs::exists(kData + "/mdi")) GTEST_SKIP() << "shared data not found at " << kData;
-  Scene scene = loadScene(kData + "/mdi/heart.svg");
+  Scene scene = loadScene(kData + "/mdi/heart.svg").scene;
   std::vector<std::string> files;
   for (const char* name : {"cat", "dog", "rabbit", "bird", "fish", "penguin", "turtle", "snail"})
     files.push_back(kData + "/mdi/" + name + ".svg");

@@ -87,7 +87,8 @@ TEST(SecondarySeeding, DeepestPocketFirstAndOnlyAboveMinDistance) {
 }
 
 TEST(SecondaryPass, FillsPocketsWithoutMovingPrimariesOrOverlapping) {
-  Scene scene = loadScene(kExamples + "/scene.svg");
+  LoadedScene input = loadScene(kExamples + "/scene.svg");
+  Scene& scene = input.scene;
   Library library = loadLibrary({kExamples + "/elements/cat.svg", kExamples + "/elements/fish.svg",
                                  kExamples + "/elements/bird.svg"});
   Library secondary = loadLibrary({kExamples + "/elements/star.svg", kExamples + "/elements/moon.svg"});
@@ -134,7 +135,7 @@ TEST(SecondaryPass, FillsPocketsWithoutMovingPrimariesOrOverlapping) {
   EXPECT_EQ(result.elementsOutside, 0);
 
   // Secondaries are drawn as elements with their own class.
-  std::string svg = toSvgString(packingDrawing(scene, packing));
+  std::string svg = toSvgString(packingDrawing(input.layout, packing));
   std::size_t marked = 0;
   for (std::size_t at = svg.find("class=\"element secondary\""); at != std::string::npos;
        at = svg.find("class=\"element secondary\"", at + 1))
@@ -143,7 +144,7 @@ TEST(SecondaryPass, FillsPocketsWithoutMovingPrimariesOrOverlapping) {
 }
 
 TEST(SecondaryPass, NoPocketDeepEnoughMeansNoSecondaries) {
-  Scene scene = loadScene(kExamples + "/scene.svg");
+  Scene scene = loadScene(kExamples + "/scene.svg").scene;
   Library library = loadLibrary({kExamples + "/elements/cat.svg"});
   Library secondary = loadLibrary({kExamples + "/elements/star.svg"});
   RepulsionOptions options = quickOptions();
@@ -157,7 +158,8 @@ TEST(SecondaryPass, NoPocketDeepEnoughMeansNoSecondaries) {
 }
 
 TEST(SecondaryPass, SameSeedSameBytesWhateverTheThreadCount) {
-  Scene scene = loadScene(kExamples + "/scene.svg");
+  LoadedScene input = loadScene(kExamples + "/scene.svg");
+  Scene& scene = input.scene;
   Library library = loadLibrary({kExamples + "/elements/cat.svg"});
   Library secondary = loadLibrary({kExamples + "/elements/star.svg", kExamples + "/elements/moon.svg"});
   RepulsionOptions options = quickOptions();
@@ -168,7 +170,7 @@ TEST(SecondaryPass, SameSeedSameBytesWhateverTheThreadCount) {
     options.threads = threads;
     Packing packing = packRepulsion(scene, library, secondary, options);
     ASSERT_GT(packing.passes.back().elements, 0);
-    std::string svg = toSvgString(packingDrawing(scene, packing));
+    std::string svg = toSvgString(packingDrawing(input.layout, packing));
     if (reference.empty()) reference = svg;
     EXPECT_EQ(svg, reference) << "threads = " << threads;
   }

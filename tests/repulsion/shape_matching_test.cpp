@@ -47,7 +47,6 @@ Shape filledShape(const Ring& ring) {
   Shape s;
   s.subpaths.push_back({ring, true});
   s.fill = Color{40, 90, 160};
-  s.tag = "path";
   return s;
 }
 
@@ -192,9 +191,9 @@ TEST(ShapeMatching, DockedRunIsTheSameWhateverTheThreadCount) {
   RepulsionOptions options = starOptions();
   options.maxIterations = 300;
   options.threads = 1;
-  std::string one = toSvgString(packingDrawing(starScene(), packRepulsion(starScene(), triangleAndDisc(), options)));
+  std::string one = toSvgString(packingDrawing(SceneLayout{}, packRepulsion(starScene(), triangleAndDisc(), options)));
   options.threads = 3;
-  std::string three = toSvgString(packingDrawing(starScene(), packRepulsion(starScene(), triangleAndDisc(), options)));
+  std::string three = toSvgString(packingDrawing(SceneLayout{}, packRepulsion(starScene(), triangleAndDisc(), options)));
   EXPECT_EQ(one, three);
 }
 

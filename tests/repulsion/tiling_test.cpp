@@ -11,6 +11,7 @@
 #include "pak/io/packing_drawing.hpp"
 #include "pak/io/scene_loader.hpp"
 #include "pak/io/svg_writer.hpp"
+#include "pak/io/tile_drawing.hpp"
 #include "pak/repulsion/repulsion.hpp"
 #include "repulsion/mesh_fixtures.hpp"
 #include "repulsion/packing_simulation.hpp"
@@ -186,7 +187,7 @@ TEST(Tiling, SameSeedSameTileWhateverTheThreadCount) {
   for (int threads : {1, 2, 4}) {
     options.threads = threads;
     Packing packing = packRepulsion(Scene{}, library, options);
-    std::string svg = toSvgString(packingDrawing(tileScene(options.tile), packing));
+    std::string svg = toSvgString(packingDrawing(tileLayout(options.tile), packing));
     if (reference.empty()) reference = svg;
     EXPECT_EQ(svg, reference) << "threads = " << threads;
   }
@@ -197,7 +198,7 @@ TEST(Tiling, TileDrawingClipsElementsAndDrawsTheirClones) {
   RepulsionOptions options = tileOptions();
   options.maxIterations = 1500;
   Packing packing = packRepulsion(Scene{}, library, options);
-  Drawing drawing = packingDrawing(tileScene(options.tile), packing);
+  Drawing drawing = packingDrawing(tileLayout(options.tile), packing);
   const DrawingGroup* elements = nullptr;
   for (const DrawingGroup& g : drawing.groups)
     if (g.id == "elements") elements = &g;
@@ -232,4 +233,5 @@ TEST(Tiling, RejectsBadTileSizes) {
   EXPECT_THROW(packRepulsion(Scene{}, library, options), InputError);
   EXPECT_THROW(tileScene({400, std::nan("")}), InputError);
   EXPECT_THROW(tileScene({0, 300}), InputError);
+  EXPECT_THROW(tileLayout({0, 300}), InputError);
 }

@@ -15,8 +15,8 @@
 #include "pak/animation/spacetime_parameters.hpp"
 #include "pak/geom/scene.hpp"
 #include "pak/geom/vec3.hpp"
-#include "pak/repulsion/repulsion.hpp"
 #include "pak/sim/element_mesh.hpp"
+#include "pak/sim/packing.hpp"
 
 namespace pak {
 

@@ -2,7 +2,6 @@
 // Vector art as Pak understands it: flattened shapes with their paint.
 #include <cstdint>
 #include <optional>
-#include <string>
 #include <vector>
 
 #include "pak/geom/clipping.hpp"
@@ -21,7 +20,8 @@ struct Subpath {
   bool closed = false;
 };
 
-// One drawn shape (an SVG path, rect, circle … after flattening and transforms).
+// One drawn shape (an SVG path, rect, circle … after flattening and transforms): geometry
+// and paint. What only documents know of it (id, layer, groups) is pak/io's SvgShape.
 struct Shape {
   std::vector<Subpath> subpaths;
   std::optional<Color> fill;     // nullopt: fill="none"
@@ -29,15 +29,6 @@ struct Shape {
   double strokeWidth = 1.0;      // in the same units as the points
   double opacity = 1.0;          // group/element opacity
   FillRule fillRule = FillRule::NonZero;
-  std::string id;                // the SVG id, if any
-  std::string tag;               // "path", "rect", … or "path-file" for .path input
-  std::string layer;             // lower-cased name of the enclosing layer ("" if none)
-  int topGroup = -1;             // index of the enclosing top-level <g>, -1 if none
-  int layerGroup = -1;           // index of the enclosing direct child <g> of the layer's group
-                                 // (one packed element in Pak's output), -1 if none
-  std::string elements;          // `data-elements` of the shape or its nearest group that has
-                                 // one: the library a container shape asks for ("" if none)
-  std::string gap;               // `data-gap`, likewise: a container's own FLOWPAK s_gap ("" if none)
 };
 
 // The region the shape's fill covers (fill rule applied; open subpaths closed, as SVG does).

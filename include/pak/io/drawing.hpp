@@ -9,14 +9,20 @@
 #include "pak/geom/art.hpp"
 #include "pak/geom/box.hpp"
 #include "pak/io/raw_markup.hpp"
+#include "pak/io/svg_shape.hpp"
 
 namespace pak {
+
+// A shape as drawn: its geometry and paint, and the id the SVG writer gives it.
+struct DrawnShape : Shape {
+  std::string id;  // "" for none
+};
 
 struct DrawingGroup {
   std::string id;       // e.g. "container", "elements"
   std::string cssClass; // e.g. "element"
   std::vector<std::pair<std::string, std::string>> attributes;  // e.g. {"data-source", "cat.svg"}
-  std::vector<Shape> shapes;
+  std::vector<DrawnShape> shapes;
   std::vector<DrawingGroup> children;
   std::optional<Box> clip = std::nullopt;  // draw only inside this box (an SVG clipPath), e.g. a tile
   // The SVG writer writes this instead of `shapes` (the PNG renderer still draws `shapes`).
@@ -29,9 +35,14 @@ struct Drawing {
   std::vector<DrawingGroup> groups;
 };
 
+// Shapes to draw: the core's without ids (copies of one element must not repeat its SVG
+// ids), a document's with theirs.
+std::vector<DrawnShape> drawnShapes(const std::vector<Shape>& shapes);
+std::vector<DrawnShape> drawnShapes(const std::vector<SvgShape>& shapes);
+
 // Unfilled lines in one colour: what debug layers and outlines are drawn with.
-inline Shape strokedLines(std::vector<Subpath> subpaths, Color colour, double width) {
-  Shape s;
+inline DrawnShape strokedLines(std::vector<Subpath> subpaths, Color colour, double width) {
+  DrawnShape s;
   s.subpaths = std::move(subpaths);
   s.fill.reset();
   s.stroke = colour;

@@ -2,9 +2,9 @@
 // The output layout every packer shares: <g id="container">, <g id="fixed"> when present,
 // <g id="elements"> with one <g class="element" data-source="…"> per placed element, and the
 // debug layers <g id="skins">, <g id="meshes"> on request.
-#include "pak/geom/scene.hpp"
 #include "pak/io/drawing.hpp"
-#include "pak/repulsion/repulsion.hpp"
+#include "pak/io/scene_layout.hpp"
+#include "pak/sim/packing.hpp"
 
 namespace pak {
 
@@ -12,6 +12,7 @@ struct PackingDrawingOptions {
   bool debugLayers = false;
 };
 
-Drawing packingDrawing(const Scene& scene, const Packing& packing, const PackingDrawingOptions& options = {});
+// `packing` drawn on its scene's layout (LoadedScene::layout).
+Drawing packingDrawing(const SceneLayout& layout, const Packing& packing, const PackingDrawingOptions& options = {});
 
 }  // namespace pak

@@ -24,7 +24,7 @@ struct PackingReadOptions {
 PackingGeometry packingFromDocument(const SvgDocument& document, const PackingReadOptions& = {});
 PackingGeometry readPacking(const std::string& path, const PackingReadOptions& = {});
 
-// Unites the painted regions of shapes sharing a key (e.g. Shape::layerGroup: one placed
+// Unites the painted regions of shapes sharing a key (e.g. SvgShape::layerGroup: one placed
 // element), in document order of first appearance; key -1 means "a shape on its own".
 // Shapes that paint nothing are skipped, and so are groups of no area.
 std::vector<Region> outlinesByKey(const std::vector<const Shape*>& shapes, const std::vector<int>& keys,

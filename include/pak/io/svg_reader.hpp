@@ -3,8 +3,10 @@
 #include <string>
 #include <vector>
 
-#include "pak/geom/art.hpp"
-#include "pak/geom/scene.hpp"
+#include "pak/geom/box.hpp"
+#include "pak/io/raw_markup.hpp"
+#include "pak/io/svg_shape.hpp"
+#include "pak/io/warning.hpp"
 
 namespace pak {
 
@@ -19,7 +21,7 @@ struct SvgDocument {
   Box viewBox;                       // in user units (viewBox attribute, else 0 0 width height)
   double width = 0.0, height = 0.0;  // in user units after resolving units like mm
   std::vector<std::string> layers;   // names of the layers found, lower-cased, in order
-  std::vector<Shape> shapes;         // in document order, in viewBox coordinates
+  std::vector<SvgShape> shapes;      // in document order, in viewBox coordinates
   std::vector<Warning> warnings;     // things skipped and why
   // The visible `fixed` layers' children as written, for outputs to copy unchanged; empty when
   // there is none or when a stylesheet styles them (outputs then re-draw `shapes`).

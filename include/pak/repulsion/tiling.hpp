@@ -8,15 +8,13 @@
 
 #include "pak/geom/polygon.hpp"
 #include "pak/geom/scene.hpp"
-#include "pak/io/drawing.hpp"
 
 namespace pak {
 
 inline bool isTiled(Vec2 tile) { return tile.x > 0.0 && tile.y > 0.0; }
 
-// The scene of a tile run: the rectangle [0, W] × [0, H] as the container, drawn without
-// paint (a visible outline would show as a line between tiles). Throws InputError unless W
-// and H are positive and finite.
+// The scene of a tile run: the rectangle [0, W] × [0, H] as the container (pak/io's
+// tileLayout draws it). Throws InputError unless W and H are positive and finite.
 Scene tileScene(Vec2 size);
 // Is `scene` exactly tileScene(size)'s container?
 bool isTileScene(const Scene& scene, Vec2 size);
@@ -33,11 +31,5 @@ bool clonesOverlap(const std::vector<Region>& regions, Vec2 period);
 // every clone of every region clipped to [0, nx W] × [0, ny H], one entry per non-empty
 // clone. verifyPacking of this against that rectangle checks the seams.
 std::vector<Region> periodicRepetition(const std::vector<Region>& regions, Vec2 period, int nx, int ny);
-
-// Tile drawing: each child group of `elements` (one per element) gets its clones that reach
-// into the tile, and the group is clipped to the tile, so the drawing is one seamless tile.
-void addPeriodicClones(DrawingGroup& elements, Vec2 period);
-// The nx × ny repetition of a tile drawing (clips moved along), for previews.
-Drawing tileRepetition(const Drawing& tile, Vec2 period, int nx, int ny);
 
 }  // namespace pak

@@ -1,0 +1,31 @@
+#pragma once
+// What the output of a run shows of its scene, besides the packed elements: the document's
+// coordinate box and size, the container shapes as the artist drew them, and the fixed layer
+// as written. The scene loader reads it with the scene; packingDrawing and flowDrawing draw
+// every packing of that scene on it.
+#include <vector>
+
+#include "pak/geom/box.hpp"
+#include "pak/io/raw_markup.hpp"
+#include "pak/io/svg_shape.hpp"
+
+namespace pak {
+
+struct ContainerShape {
+  SvgShape shape;
+  // Drawn with its own paint: it comes from a `container` layer (or is an element of the
+  // packing whose elements are now the containers). false: the file is a container by itself
+  // (an icon, a .path outline), drawn as an outline or its fill would hide the elements.
+  bool keepsPaint = false;
+};
+
+struct SceneLayout {
+  Box viewBox;                       // the document's coordinate box
+  double width = 0.0, height = 0.0;  // the document's size in its own user units
+  std::vector<ContainerShape> containerShapes;
+  std::vector<SvgShape> fixedShapes; // the fixed elements (Scene::fixed) as read
+  RawMarkup fixedMarkup;             // the `fixed` layer as written (SVG input): the output copies
+                                     // it unchanged; empty: the output re-draws fixedShapes
+};
+
+}  // namespace pak

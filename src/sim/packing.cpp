@@ -1,0 +1,34 @@
+// What a packing paints, shared by every packer's checks and reports.
+#include "pak/sim/packing.hpp"
+
+#include "pak/geom/clipping.hpp"
+
+namespace pak {
+
+const char* toString(StopReason reason) {
+  switch (reason) {
+    case StopReason::TargetFill: return "target-fill";
+    case StopReason::Stalled: return "stalled";
+    case StopReason::IterationCap: return "iteration-cap";
+  }
+  return "?";
+}
+
+std::vector<Region> artOutlines(const Packing& packing) {
+  std::vector<Region> outlines;
+  for (const PlacedElement& e : packing.elements) {
+    std::vector<Region> painted;
+    for (const Shape& s : e.art) painted.push_back(paintedRegion(s));
+    outlines.push_back(unite(painted));
+  }
+  return outlines;
+}
+
+double artFill(const Packing& packing) {
+  double total = area(packing.fixedArt);
+  for (const Region& r : artOutlines(packing)) total += area(r);
+  double a = area(packing.container);
+  return a > 0.0 ? total / a : 0.0;
+}
+
+}  // namespace pak
