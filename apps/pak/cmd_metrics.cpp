@@ -176,14 +176,14 @@ std::string visualizationPath(const std::string& base, std::size_t index, std::s
       .string();
 }
 
-int runMetrics(MetricsArgs args) {
+int runMetrics(MetricsArgs& args, const CLI::App&) {
   // Check the outputs before the (slow) measuring, so a typo fails at once.
   if (!args.plot.empty() && extensionOf(args.plot) != ".png" && extensionOf(args.plot) != ".svg")
     throw InputError(args.plot, "unknown plot format '" + extensionOf(args.plot) + "' (use .png or .svg)");
   if (args.visualize.has_value() != !args.visualizeOut.empty())
-    throw InputError("", "--visualize R and --visualize-out FILE.png go together");
+    throw InputError("--visualize", "R and --visualize-out FILE.png go together");
   if (args.visualize && (!std::isfinite(*args.visualize) || *args.visualize < 0.0))
-    throw InputError("", "--visualize must be a non-negative offset");
+    throw InputError("--visualize", "must be a non-negative offset");
   if (!args.visualizeOut.empty() && extensionOf(args.visualizeOut) != ".png")
     throw InputError(args.visualizeOut, "--visualize-out must be a .png file");
   if (!args.distanceMap.empty() && extensionOf(args.distanceMap) != ".png")
@@ -230,57 +230,56 @@ int runMetrics(MetricsArgs args) {
   return 0;
 }
 
-const CommandRegistrar registrar{Command{
-    "metrics", [](CLI::App& app) -> std::function<int()> {
-      auto args = std::make_shared<MetricsArgs>();
-      CLI::App* cmd = app.add_subcommand(
-          "metrics",
-          "Measure how even the negative space of packings is (thesis chapter 6): positive/negative "
-          "space ratios, the spherical contact probability Q(r), the distance histogram H(r) = -Q'(r), "
-          "the overlap function O(r), and Q and O at d_gap/2. Reads Pak's output (layers `container` "
-          "and `elements`), other layer names, or else takes the largest closed shape as the container "
-          "and each top-level group or shape as an element. Lengths are in the file's own units.");
-      cmd->add_option("files", args->files, "Packing SVG files to measure and compare")->required()->type_name("PACKING");
-      cmd->add_option("--gap", args->gap, "d_gap in the file's units (default: from --report, else estimated)")
-          ->type_name("D");
-      cmd->add_option("--report", args->report,
-                      "Pak report (pak pack --report) to read d_gap from: \"d_gap\", or \"parameters\".\"gap\" / "
-                      "\"canonical-scale\"")
-          ->type_name("FILE");
-      cmd->add_option("--radii", args->metrics.radii, "samples of r for Q, H and O (default: 100)")->type_name("N");
-      cmd->add_option("--grid", args->metrics.gridResolution,
-                      "distance-transform grid cells along the container's bounding square (default: 1000)")
-          ->type_name("N");
-      cmd->add_option("--bins", args->metrics.histogramBins, "bins of the discrete distance histogram (default: 50)")
-          ->type_name("N");
-      cmd->add_option("--arc-tolerance", args->metrics.arcTolerance,
-                      "largest error of the polygon offsets and of the outline simplification before them, "
-                      "in the file's units (default 0: 1e-4 of the container's bounding square)")
-          ->type_name("D");
-      cmd->add_flag("--calibrate", args->calibrate,
-                    "offset every packing's elements uniformly to the packings' mean negative-space ratio first "
-                    "(thesis 6.4), and report the offset");
-      cmd->add_option("--container-layer", args->layers.containerLayer, "layer holding the container (default: container)")
-          ->type_name("NAME");
-      cmd->add_option("--elements-layer", args->layers.elementsLayer,
-                      "layer whose child groups are the elements (default: elements)")
-          ->type_name("NAME");
-      cmd->add_option("--csv", args->csv, "write every curve as CSV (file,curve,r,value)")->type_name("FILE");
-      cmd->add_option("--json", args->json, "write every quantity and curve as JSON")->type_name("FILE");
-      cmd->add_option("--plot", args->plot, "draw Q, H and O of all packings side by side (.png or .svg)")
-          ->type_name("FILE");
-      cmd->add_option("--visualize", args->visualize,
-                      "draw elements offset by R with overlaps in red (thesis Fig. 6.4); needs --visualize-out")
-          ->type_name("R");
-      cmd->add_option("--visualize-out", args->visualizeOut,
-                      "PNG for --visualize (numbered -1, -2 … for several packings)")
-          ->type_name("FILE.png");
-      cmd->add_option("--distance-map", args->distanceMap,
-                      "draw the distance transform of the negative space, one pixel per grid cell, light = far "
-                      "from any element (thesis Fig. 6.3b; numbered -1, -2 … for several packings)")
-          ->type_name("FILE.png");
-      return [args] { return runMetrics(*args); };
-    }}};
+void declareMetricsOptions(CLI::App& command, MetricsArgs& args) {
+  command.add_option("files", args.files, "Packing SVG files to measure and compare")->required()->type_name("PACKING");
+  command.add_option("--gap", args.gap, "d_gap in the file's units (default: from --report, else estimated)")
+      ->type_name("D");
+  command.add_option("--report", args.report,
+                     "Pak report (pak pack --report) to read d_gap from: \"d_gap\", or \"parameters\".\"gap\" / "
+                     "\"canonical-scale\"")
+      ->type_name("FILE");
+  command.add_option("--radii", args.metrics.radii, "samples of r for Q, H and O (default: 100)")->type_name("N");
+  command.add_option("--grid", args.metrics.gridResolution,
+                     "distance-transform grid cells along the container's bounding square (default: 1000)")
+      ->type_name("N");
+  command.add_option("--bins", args.metrics.histogramBins, "bins of the discrete distance histogram (default: 50)")
+      ->type_name("N");
+  command.add_option("--arc-tolerance", args.metrics.arcTolerance,
+                     "largest error of the polygon offsets and of the outline simplification before them, "
+                     "in the file's units (default 0: 1e-4 of the container's bounding square)")
+      ->type_name("D");
+  command.add_flag("--calibrate", args.calibrate,
+                   "offset every packing's elements uniformly to the packings' mean negative-space ratio first "
+                   "(thesis 6.4), and report the offset");
+  command.add_option("--container-layer", args.layers.containerLayer, "layer holding the container (default: container)")
+      ->type_name("NAME");
+  command.add_option("--elements-layer", args.layers.elementsLayer,
+                     "layer whose child groups are the elements (default: elements)")
+      ->type_name("NAME");
+  command.add_option("--csv", args.csv, "write every curve as CSV (file,curve,r,value)")->type_name("FILE");
+  command.add_option("--json", args.json, "write every quantity and curve as JSON")->type_name("FILE");
+  command.add_option("--plot", args.plot, "draw Q, H and O of all packings side by side (.png or .svg)")
+      ->type_name("FILE");
+  command.add_option("--visualize", args.visualize,
+                     "draw elements offset by R with overlaps in red (thesis Fig. 6.4); needs --visualize-out")
+      ->type_name("R");
+  command.add_option("--visualize-out", args.visualizeOut,
+                     "PNG for --visualize (numbered -1, -2 … for several packings)")
+      ->type_name("FILE.png");
+  command.add_option("--distance-map", args.distanceMap,
+                     "draw the distance transform of the negative space, one pixel per grid cell, light = far "
+                     "from any element (thesis Fig. 6.3b; numbered -1, -2 … for several packings)")
+      ->type_name("FILE.png");
+}
+
+const CommandRegistrar registrar{subcommand<MetricsArgs>(
+    "metrics",
+    "Measure how even the negative space of packings is (thesis chapter 6): positive/negative "
+    "space ratios, the spherical contact probability Q(r), the distance histogram H(r) = -Q'(r), "
+    "the overlap function O(r), and Q and O at d_gap/2. Reads Pak's output (layers `container` "
+    "and `elements`), other layer names, or else takes the largest closed shape as the container "
+    "and each top-level group or shape as an element. Lengths are in the file's own units.",
+    declareMetricsOptions, runMetrics)};
 
 }  // namespace
 }  // namespace pak::cli
