@@ -18,9 +18,11 @@
 #include "pak/geom/clipping.hpp"
 #include "pak/io/atomic_file.hpp"
 #include "pak/io/distance_map_image.hpp"
+#include "pak/io/json_syntax_error.hpp"
 #include "pak/io/metrics_plot.hpp"
 #include "pak/io/offset_visualization.hpp"
 #include "pak/io/packing_reader.hpp"
+#include "pak/io/text_file.hpp"
 #include "pak/metrics/metrics.hpp"
 
 namespace pak::cli {
@@ -50,10 +52,13 @@ std::string extensionOf(const std::string& path) {
 // d_gap in the packing's units from a Pak report: an explicit "d_gap", else the canonical
 // gap of `pak pack` divided by the canonical units per input unit.
 double gapFromReport(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, "cannot read the report");
-  json report = json::parse(in, nullptr, /*allow_exceptions=*/false);
-  if (report.is_discarded() || !report.is_object()) throw InputError(path, "the report is not a JSON object");
+  json report;
+  try {
+    report = json::parse(readTextFile(path));
+  } catch (const json::exception& error) {
+    throw jsonSyntaxError(path, error.what());
+  }
+  if (!report.is_object()) throw InputError(path, "the report is not a JSON object");
   if (report.contains("d_gap") && report["d_gap"].is_number()) return report["d_gap"].get<double>();
   const json* gap = report.contains("parameters") && report["parameters"].is_object() &&
                             report["parameters"].contains("gap")

@@ -61,7 +61,11 @@ struct Option {
   std::vector<std::string> aliases = {};  // old names, accepted on the command line and in --config, not shown
 };
 
-// Reads `file`: a JSON object, else an InputError naming the file.
+// "" for the text of an integer from 0 to 2^64 − 1 (CLI11 reads "-1" as 2^64 − 1 and
+// saturates larger numbers), else what is wrong.
+std::string nonNegativeInteger(const std::string& text);
+
+// Reads `file`: a JSON object, else an InputError naming the file (and line).
 nlohmann::json readConfigObject(const std::string& file);
 // Sets `target` from a --config value, or throws InputError naming the file and key.
 void assignConfigValue(double& target, const nlohmann::json& value, const std::string& key, const std::string& file);
@@ -141,6 +145,7 @@ class OptionTable {
         return command.add_option("--" + name, target, help)->capture_default_str();
     };
     CLI::Option* primary = add(o.name, o.help);
+    if constexpr (std::is_same_v<Value, std::uint64_t>) primary->check(CLI::Validator(nonNegativeInteger, ""));
     // Hidden, and checked here rather than with CLI11's excludes(), which would print the
     // alias's (hidden) name in the primary's help.
     for (const std::string& alias : o.aliases)

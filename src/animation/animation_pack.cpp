@@ -118,12 +118,13 @@ Vec2 rotate(Vec2 p, double angle) { return rotated(p, angle); }
 
 AnimatedPacking packAnimation(const Scene& scene, const Library& library, const AnimationScript& script,
                               const AnimationOptions& options, const AnimationCallbacks& callbacks,
-                              const AnimationState* resumeFrom) {
+                              const AnimationState* resumeFrom) try {
   const auto started = std::chrono::steady_clock::now();
   const int slices = options.slices > 0 ? options.slices : script.slices;
   checkOptions(options, slices);
-  if (script.elements.empty()) throw InputError("", "the animation has no elements");
-  if (library.size() != script.elements.size()) throw InputError("", "one element art per animation element is needed");
+  if (script.elements.empty()) throw InputError(script.source, "the animation has no elements");
+  if (library.size() != script.elements.size())
+    throw InputError(script.source, "one element art per animation element is needed");
   const Box box = bounds(scene.container);
   const double inputArea = area(scene.container);
   if (box.empty() || !(inputArea > 0.0)) throw InputError(scene.source, "container has no area");
@@ -300,12 +301,12 @@ AnimatedPacking packAnimation(const Scene& scene, const Library& library, const 
         for (std::size_t i = 0; i < types.size(); ++i)
           if (types[i].spec->id == type.spec->loopTo && guidedInstance[i] >= 0) to = guidedInstance[i], found = true;
         if (!found)
-          throw InputError("", "element '" + type.spec->id + "' loops to '" + type.spec->loopTo +
+          throw InputError(script.source, "element '" + type.spec->id + "' loops to '" + type.spec->loopTo +
                                    "', which is not a guided element; loop_to joins guided elements");
       }
       const ElementType& toType = types[instances[to].type];
       if (toType.meshIndex != type.meshIndex)
-        throw InputError("", "element '" + type.spec->id + "' loops to '" + toType.spec->id +
+        throw InputError(script.source, "element '" + type.spec->id + "' loops to '" + toType.spec->id +
                                  "', drawn from another SVG; a loop joins copies of one drawing");
       const int n = static_cast<int>(meshes[type.meshIndex].mesh.mesh.vertices.size());
       sim.addLoop(static_cast<int>(e), to,
@@ -317,7 +318,7 @@ AnimatedPacking packAnimation(const Scene& scene, const Library& library, const 
   if (resumeFrom) {
     if (resumeFrom->positions.size() != sim.vertexCount() || resumeFrom->growth.size() != sim.growth().size() ||
         resumeFrom->velocities.size() != sim.vertexCount())
-      throw InputError("", "the checkpoint was made for other inputs or options (its sizes do not match)");
+      throw InputError("--resume", "the checkpoint was made for other inputs or options (its sizes do not match)");
     sim.restoreState(resumeFrom->iteration, resumeFrom->positions, resumeFrom->velocities, resumeFrom->growth);
   }
   const auto setupDone = std::chrono::steady_clock::now();
@@ -338,7 +339,7 @@ AnimatedPacking packAnimation(const Scene& scene, const Library& library, const 
   int recorded = 0;
   if (resumeFrom && !resumeFrom->recentMeanGrowth.empty()) {
     if (resumeFrom->recentMeanGrowth.size() != meanGrowth.size())
-      throw InputError("", "the checkpoint was made with another stall window");
+      throw InputError("--resume", "the checkpoint was made with another --stall-window");
     meanGrowth = resumeFrom->recentMeanGrowth;
     recorded = resumeFrom->recorded;
   }
@@ -413,6 +414,8 @@ AnimatedPacking packAnimation(const Scene& scene, const Library& library, const 
   result.setupSeconds = std::chrono::duration<double>(setupDone - started).count();
   result.seconds = std::chrono::duration<double>(finished - started).count();
   return result;
+} catch (const InputError& error) {
+  throw attributed(error, scene.source);
 }
 
 }  // namespace pak

@@ -481,10 +481,12 @@ void FlowPacker::mirror() {
 }  // namespace
 
 FlowPacking packFlow(const Scene& scene, const Library& library, const FlowOptions& options,
-                     const FlowCallbacks& callbacks) {
+                     const FlowCallbacks& callbacks) try {
   validate(options);
   FlowPacker packer(scene, library, options, callbacks);
   return packer.run();
+} catch (const InputError& error) {
+  throw attributed(error, scene.source);
 }
 
 double flowFill(const FlowPacking& packing) {

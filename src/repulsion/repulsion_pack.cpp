@@ -268,7 +268,7 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Repulsio
 }
 
 Packing packRepulsion(const Scene& scene, const Library& library, const Library& secondaryLibrary,
-                      const RepulsionOptions& options, const RepulsionCallbacks& callbacks) {
+                      const RepulsionOptions& options, const RepulsionCallbacks& callbacks) try {
   const auto passStart = std::chrono::steady_clock::now();
   checkOptions(options);
   // Tile mode packs the rectangle [0, W] × [0, H] in place of the scene's container.
@@ -490,6 +490,8 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Library&
   secondPass.seconds = secondsSince(secondaryStart);
   packing.passes.push_back(secondPass);
   return packing;
+} catch (const InputError& error) {
+  throw attributed(error, scene.source);
 }
 
 std::vector<Region> artOutlines(const Packing& packing) {

@@ -52,7 +52,7 @@ void translate(DrawingGroup& group, Vec2 offset) {
 
 Scene tileScene(Vec2 size) {
   if (!(size.x > 0.0 && size.y > 0.0 && std::isfinite(size.x) && std::isfinite(size.y)))
-    throw InputError("", "tile size must be two positive numbers W,H");
+    throw InputError("--tile", "must be two positive numbers W,H");
   Scene scene;
   scene.source = "tile " + std::to_string(size.x) + " x " + std::to_string(size.y);
   scene.viewBox = tileBox(size);

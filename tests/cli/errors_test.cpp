@@ -114,6 +114,86 @@ TEST(CliErrors, EmptyPathFile) {
   expectInputError(folder.write("empty.path", ""));
 }
 
+// A command that fails before writing anything: exactly "pak: error: <start>…" on one stderr
+// line, exit code 2, and no C++ or library name (the parsers' own messages are reworded).
+void expectOneLineError(const std::string& arguments, const std::string& start) {
+  PakRun run = runPak(arguments);
+  SCOPED_TRACE("pak " + arguments + "\nstderr: " + run.err);
+  EXPECT_EQ(run.exitCode, 2);
+  EXPECT_TRUE(run.out.empty()) << run.out;
+  ASSERT_EQ(run.errLines().size(), 1u);
+  EXPECT_EQ(run.err.rfind("pak: error: " + start, 0), 0u);
+  for (const char* internal : {"json.exception", "std::", "stoi", "stod", "_M_", "CLI::", "Could not convert",
+                               "basic_string", "what()"})
+    EXPECT_EQ(run.err.find(internal), std::string::npos) << internal;
+}
+
+const std::string kPack = "pack -c examples/scene.svg -e examples/elements -q ";
+const std::string kFlow = "flow examples/flow/koi.svg -e examples/flow/elements -q ";
+const std::string kAnimate = "animate -c examples/animate/stars/disc.svg -a examples/animate/stars/stars.json -q ";
+
+TEST(CliErrors, OptionValuesNameTheOption) {
+  ScratchFolder out("errors-options");
+  const std::string o = "-o " + shellQuoted(out.file("out.svg")) + " ";
+  expectOneLineError(kPack + o + "--gap -1", "--gap: must be a positive number");
+  expectOneLineError(kPack + o + "--k-edge -5", "--k-edge: must be a non-negative number");
+  expectOneLineError(kPack + o + "--stall-window 0", "--stall-window: must be at least 1");
+  expectOneLineError(kPack + o + "--preset stiff", "--preset: unknown preset \"stiff\"");
+  expectOneLineError(kPack + o + "--orientation sideways", "--orientation: 'sideways' is not one of");
+  expectOneLineError(kFlow + o + "--stop-ratio 2", "--stop-ratio: must be in (0, 1]");
+  EXPECT_TRUE(fs::is_empty(out.path()));
+  expectOneLineError(kAnimate + "-o " + shellQuoted(out.file("anim")) + " --cell-size 0",
+                     "--cell-size: must be a positive number");
+}
+
+TEST(CliErrors, UnreadableOptionValuesNameTheOption) {
+  ScratchFolder out("errors-values");
+  const std::string o = "-o " + shellQuoted(out.file("out.svg")) + " ";
+  expectOneLineError(kPack + o + "--count abc", "--count: cannot read 'abc' as an integer");
+  expectOneLineError(kPack + o + "--gap wide", "--gap: cannot read 'wide' as a number");
+  expectOneLineError(kPack + o + "--seed -1", "--seed: must be a non-negative integer");
+  expectOneLineError(kPack + o + "--seed 99999999999999999999999", "--seed: must be at most");
+  expectOneLineError(kPack + o + "--no-such-option 3", "--no-such-option: not an option of this command");
+  expectOneLineError("pack -e examples/elements " + o, "--container: is required");
+  expectOneLineError("pack -c examples/scene.svg " + o, "--elements: is required");
+  expectOneLineError("", "expected a command: ");
+  EXPECT_TRUE(fs::is_empty(out.path()));
+}
+
+TEST(CliErrors, OldAndNewSpellingOfAnOptionTogether) {
+  ScratchFolder out("errors-alias");
+  expectOneLineError(kAnimate + "-o " + shellQuoted(out.file("anim")) + " --edge 30 --k-edge 40",
+                     "--edge: the same option as --k-edge");
+  const std::string config = out.write("both.json", R"({"edge": 30, "k-edge": 40})");
+  expectOneLineError(kAnimate + "-o " + shellQuoted(out.file("anim")) + " --config " + shellQuoted(config),
+                     config + ": \"edge\" and \"k-edge\" are the same option");
+}
+
+TEST(CliErrors, BadConfigFilesNameTheFileAndLine) {
+  ScratchFolder folder("errors-config");
+  const std::string o = "-o " + shellQuoted(folder.file("out.svg")) + " --config ";
+  const std::string broken = folder.write("broken.json", "{\n  \"gap\": 12,\n  \"count\" 4\n}\n");
+  expectOneLineError(kPack + o + shellQuoted(broken), broken + ": not valid JSON at line 3, column ");
+  const std::string huge = folder.write("huge.json", R"({"gap": 1e999})");
+  expectOneLineError(kPack + o + shellQuoted(huge), huge + ": not valid JSON: number overflow");
+  const std::string empty = folder.write("empty.json", "");
+  expectOneLineError(kPack + o + shellQuoted(empty), empty + ": not valid JSON at line 1");
+  const std::string count = folder.write("count.json", R"({"count": 99999999999})");
+  expectOneLineError(kPack + o + shellQuoted(count), count + ": \"count\" is out of range");
+  const std::string seed = folder.write("seed.json", R"({"seed": -2})");
+  expectOneLineError(kPack + o + shellQuoted(seed), seed + ": \"seed\" must be a non-negative integer");
+  const std::string preset = folder.write("preset.json", R"({"preset": "stiff"})");
+  expectOneLineError(kPack + o + shellQuoted(preset), "--preset: unknown preset \"stiff\"");
+}
+
+TEST(CliErrors, BadAnimationFileNamesTheFileAndLine) {
+  ScratchFolder folder("errors-animation");
+  const std::string script = folder.write("broken.json", "{\"elements\": [\n  {\"svg\": }\n]}\n");
+  expectOneLineError("animate -c examples/animate/stars/disc.svg -q -o " + shellQuoted(folder.file("anim")) +
+                         " -a " + shellQuoted(script),
+                     script + ": not valid JSON at line 2, column ");
+}
+
 TEST(CliErrors, UnknownOptionIsAUsageError) {
   PakRun run = runPak("inspect --no-such-option examples/scene.svg");
   EXPECT_EQ(run.exitCode, 2);
