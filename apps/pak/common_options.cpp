@@ -36,7 +36,8 @@ void addCommonOptions(CLI::App& command, CommonArguments& arguments, std::initia
           auto& target = arguments.*member;
           using Value = std::remove_reference_t<decltype(target)>;
           if constexpr (std::is_same_v<Value, bool>) return command.add_flag(declaration.names, target, help);
-          if constexpr (std::is_same_v<Value, int>) return command.add_option(declaration.names, target, help)->capture_default_str();
+          if constexpr (std::is_same_v<Value, int>)
+            return command.add_option(declaration.names, target, help)->capture_default_str();
           if constexpr (std::is_same_v<Value, std::string>) return command.add_option(declaration.names, target, help);
         },
         declaration.member);

@@ -44,7 +44,8 @@ OptionTable<FlowArguments> textOptionTable() {
 }  // namespace
 
 const OptionTable<FlowArguments>& flowOptions() {
-  static const OptionTable<FlowArguments> table = mounted(flowOptionTable(), field(&FlowArguments::options)) + textOptionTable();
+  using A = FlowArguments;
+  static const OptionTable<A> table = mounted(flowOptionTable(), field(&A::options)) + textOptionTable();
   return table;
 }
 

@@ -71,7 +71,8 @@ nlohmann::json readConfigObject(const std::string& file);
 void assignConfigValue(double& target, const nlohmann::json& value, const std::string& key, const std::string& file);
 void assignConfigValue(int& target, const nlohmann::json& value, const std::string& key, const std::string& file);
 void assignConfigValue(bool& target, const nlohmann::json& value, const std::string& key, const std::string& file);
-void assignConfigValue(std::string& target, const nlohmann::json& value, const std::string& key, const std::string& file);
+void assignConfigValue(std::string& target, const nlohmann::json& value, const std::string& key,
+                       const std::string& file);
 void assignConfigValue(std::uint64_t& target, const nlohmann::json& value, const std::string& key,
                        const std::string& file);
 
@@ -173,10 +174,10 @@ class OptionTable {
 template <class Root, class Sub>
 OptionTable<Root> mounted(const OptionTable<Sub>& table, const Field<Root, Sub>& at) {
   std::vector<Option<Root>> options;
-  for (const Option<Sub>& o : table.options())
-    options.push_back({o.name,
-                       std::visit([&](const auto& f) -> typename Option<Root>::Binding { return nested(at, f); }, o.field),
-                       o.help, o.aliases});
+  for (const Option<Sub>& o : table.options()) {
+    auto binding = [&](const auto& f) -> typename Option<Root>::Binding { return nested(at, f); };
+    options.push_back({o.name, std::visit(binding, o.field), o.help, o.aliases});
+  }
   return OptionTable<Root>(std::move(options));
 }
 

@@ -33,7 +33,8 @@ OptionTable<RepulsionOptions> repulsionOptionTable() {
       {"docking-strength", field(&O::shapeMatching, &CornerDockingOptions::dockingStrength), "with --shape-matching: spring strength holding each matched element's tip on its corner"},
       {"orientation-torsion", field(&O::orientation, &OrientationOptions::torsion), "k_tor used with --orientation upright/field when --k-torsion is 0"},
   };
-  return elements + mounted(simulationOptions(), field(&O::simulation)) + passes + mounted(runOptions(), field(&O::run));
+  return elements + mounted(simulationOptions(), field(&O::simulation)) + passes +
+         mounted(runOptions(), field(&O::run));
 }
 
 std::string presetHelp() {

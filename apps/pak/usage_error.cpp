@@ -34,7 +34,8 @@ std::string usageErrorMessage(const CLI::App& app, const CLI::ParseError& error)
   std::smatch match;
   if (std::regex_match(text, match, conversion)) {
     const CLI::Option* option = findOption(app, match[1].str());
-    return match[1].str() + ": cannot read '" + match[2].str() + "' as " + kindOf(option ? option->get_type_name() : "");
+    const std::string kind = kindOf(option ? option->get_type_name() : "");
+    return match[1].str() + ": cannot read '" + match[2].str() + "' as " + kind;
   }
   if (std::regex_match(text, match, required)) return match[1].str() + ": is required";
   if (std::regex_match(text, match, repeated))

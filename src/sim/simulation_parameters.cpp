@@ -20,7 +20,9 @@ void checkSimulationParameters(const SimulationParameters& p) {
     if (!(p.*member >= 0.0) || !std::isfinite(p.*member)) throw InputError(option, "must be a non-negative number");
   // An infinite tolerance is the thesis's rule: nothing outside stops growth.
   if (!(p.outsideTolerance >= 0.0)) throw InputError("--outside-tolerance", "must not be negative");
-  for (const auto& [member, option] : {std::pair{&P::timeStep, "--time-step"}, std::pair{&P::velocityCap, "--velocity-cap"}})
+  const std::pair<double P::*, const char*> positive[] = {{&P::timeStep, "--time-step"},
+                                                          {&P::velocityCap, "--velocity-cap"}};
+  for (const auto& [member, option] : positive)
     if (!(p.*member > 0.0) || !std::isfinite(p.*member)) throw InputError(option, "must be a positive number");
   if (!(p.damping >= 0.0 && p.damping < 1.0)) throw InputError("--damping", "must be in [0, 1)");
 }

@@ -7,12 +7,12 @@
 
 namespace pak {
 
-// Stop when every slice is within `closeness` of another element or the wall (5.5.3, thesis
-// 0.006 of the container), when every slice reached the growth cap, when the slices' mean
-// growth rose by less than `stallGrowth` over the last `stallWindow` iterations (a slice grows
-// by growthRate × Δt = 0.001 per free iteration), or at the cap.
+// When the spacetime simulation stops (5.5.3): whichever comes first, or when every slice
+// reached the growth cap (SpacetimeParameters::maxGrowth).
 struct AnimationStopRule {
-  double closeness = 6.0;
+  double closeness = 6.0;  // every slice is this close to another element or the wall (thesis 0.006 of the container)
+  // The slices' mean growth rose by less than this over the last stallWindow iterations (a
+  // slice grows by growthRate × Δt = 0.001 per free iteration).
   double stallGrowth = 0.005;
   int stallWindow = 100;
   int maxIterations = 3000;
