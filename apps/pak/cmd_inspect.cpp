@@ -337,7 +337,7 @@ void printReport(std::ostream& out, const json& report) {
   }
 }
 
-int runInspect(const InspectOptions& options) {
+int runInspect(InspectOptions& options, const CLI::App&) {
   // Inspect every file before printing anything: a bad file gives one error line and no
   // half-printed report.
   json reports = json::array();
@@ -355,24 +355,23 @@ int runInspect(const InspectOptions& options) {
   return 0;
 }
 
-const CommandRegistrar registrar{Command{
-    "inspect", [](CLI::App& app) -> std::function<int()> {
-      auto options = std::make_shared<InspectOptions>();
-      CLI::App* command = app.add_subcommand(
-          "inspect",
-          "Show what Pak sees in SVG or .path files: document size and viewBox, layers, containers "
-          "(area, holes, bounding box), fixed elements, guides, spines, element art (paths, colours, "
-          "areas) and warnings about anything skipped. A file with a `container` layer is shown as a "
-          "scene; other files as elements, and also as a scene when they could serve as a container "
-          "(a lone closed shape). Areas and coordinates are in the file's own user units.");
-      command->add_option("files", options->files, "SVG (.svg) or legacy RepulsionPak (.path) files to inspect")
-          ->required()
-          ->type_name("FILE");
-      command->add_flag("--json", options->json,
-                        "Print the report as JSON ({\"files\": [...]}, one object per file) instead of text "
-                        "(default: text)");
-      return [options] { return runInspect(*options); };
-    }}};
+void declareInspectOptions(CLI::App& command, InspectOptions& options) {
+  command.add_option("files", options.files, "SVG (.svg) or legacy RepulsionPak (.path) files to inspect")
+      ->required()
+      ->type_name("FILE");
+  command.add_flag("--json", options.json,
+                   "Print the report as JSON ({\"files\": [...]}, one object per file) instead of text "
+                   "(default: text)");
+}
+
+const CommandRegistrar registrar{subcommand<InspectOptions>(
+    "inspect",
+    "Show what Pak sees in SVG or .path files: document size and viewBox, layers, containers "
+    "(area, holes, bounding box), fixed elements, guides, spines, element art (paths, colours, "
+    "areas) and warnings about anything skipped. A file with a `container` layer is shown as a "
+    "scene; other files as elements, and also as a scene when they could serve as a container "
+    "(a lone closed shape). Areas and coordinates are in the file's own user units.",
+    declareInspectOptions, runInspect)};
 
 }  // namespace
 }  // namespace pak::cli

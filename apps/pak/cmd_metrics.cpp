@@ -21,9 +21,11 @@
 #include "pak/io/atomic_file.hpp"
 #include "pak/io/distance_map_image.hpp"
 #include "pak/io/evenness_map_image.hpp"
+#include "pak/io/json_syntax_error.hpp"
 #include "pak/io/metrics_plot.hpp"
 #include "pak/io/offset_visualization.hpp"
 #include "pak/io/packing_reader.hpp"
+#include "pak/io/text_file.hpp"
 #include "pak/metrics/evenness.hpp"
 #include "pak/metrics/metrics.hpp"
 
@@ -61,10 +63,13 @@ std::string extensionOf(const std::string& path) {
 // d_gap in the packing's units from a Pak report: an explicit "d_gap", else the canonical
 // gap of `pak pack` divided by the canonical units per input unit.
 double gapFromReport(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, "cannot read the report");
-  json report = json::parse(in, nullptr, /*allow_exceptions=*/false);
-  if (report.is_discarded() || !report.is_object()) throw InputError(path, "the report is not a JSON object");
+  json report;
+  try {
+    report = json::parse(readTextFile(path));
+  } catch (const json::exception& error) {
+    throw jsonSyntaxError(path, error.what());
+  }
+  if (!report.is_object()) throw InputError(path, "the report is not a JSON object");
   if (report.contains("d_gap") && report["d_gap"].is_number()) return report["d_gap"].get<double>();
   const json* gap = report.contains("parameters") && report["parameters"].is_object() &&
                             report["parameters"].contains("gap")
@@ -235,14 +240,14 @@ std::string visualizationPath(const std::string& base, std::size_t index, std::s
       .string();
 }
 
-int runMetrics(MetricsArgs args) {
+int runMetrics(MetricsArgs& args, const CLI::App&) {
   // Check the outputs before the (slow) measuring, so a typo fails at once.
   if (!args.plot.empty() && extensionOf(args.plot) != ".png" && extensionOf(args.plot) != ".svg")
     throw InputError(args.plot, "unknown plot format '" + extensionOf(args.plot) + "' (use .png or .svg)");
   if (args.visualize.has_value() != !args.visualizeOut.empty())
-    throw InputError("", "--visualize R and --visualize-out FILE.png go together");
+    throw InputError("--visualize", "R and --visualize-out FILE.png go together");
   if (args.visualize && (!std::isfinite(*args.visualize) || *args.visualize < 0.0))
-    throw InputError("", "--visualize must be a non-negative offset");
+    throw InputError("--visualize", "must be a non-negative offset");
   if (!args.visualizeOut.empty() && extensionOf(args.visualizeOut) != ".png")
     throw InputError(args.visualizeOut, "--visualize-out must be a .png file");
   if (!args.distanceMap.empty() && extensionOf(args.distanceMap) != ".png")
@@ -301,69 +306,68 @@ int runMetrics(MetricsArgs args) {
   return 0;
 }
 
-const CommandRegistrar registrar{Command{
-    "metrics", [](CLI::App& app) -> std::function<int()> {
-      auto args = std::make_shared<MetricsArgs>();
-      CLI::App* cmd = app.add_subcommand(
-          "metrics",
-          "Measure how even the negative space of packings is (thesis chapter 6): positive/negative "
-          "space ratios, the spherical contact probability Q(r), the distance histogram H(r) = -Q'(r), "
-          "the overlap function O(r), and Q and O at d_gap/2; and the evenness measure: h, the median distance "
-          "to the nearest element or wall along the medial axis of the negative space, and the pocket shares "
-          "P_k, the fraction of the negative space farther than k h from everything (docs/metrics.md). Reads "
-          "Pak's output (layers `container`, `elements` and `fixed`), other layer names, or else takes the "
-          "largest closed shape as the container "
-          "and each top-level group or shape as an element. Lengths are in the file's own units.");
-      cmd->add_option("files", args->files, "Packing SVG files to measure and compare")->required()->type_name("PACKING");
-      cmd->add_option("--gap", args->gap, "d_gap in the file's units (default: from --report, else estimated)")
-          ->type_name("D");
-      cmd->add_option("--report", args->report,
-                      "Pak report (pak pack --report) to read d_gap from: \"d_gap\", or \"parameters\".\"gap\" / "
-                      "\"canonical-scale\"")
-          ->type_name("FILE");
-      cmd->add_option("--radii", args->metrics.radii, "samples of r for Q, H and O (default: 100)")->type_name("N");
-      cmd->add_option("--grid", args->metrics.gridResolution,
-                      "distance-transform grid cells along the container's bounding square, for the histogram, "
-                      "the distance map and the evenness measure (default: 1000)")
-          ->type_name("N");
-      cmd->add_option("--bins", args->metrics.histogramBins, "bins of the discrete distance histogram (default: 50)")
-          ->type_name("N");
-      cmd->add_option("--arc-tolerance", args->metrics.arcTolerance,
-                      "largest error of the polygon offsets and of the outline simplification before them, "
-                      "in the file's units (default 0: 1e-4 of the container's bounding square)")
-          ->type_name("D");
-      cmd->add_flag("--calibrate", args->calibrate,
-                    "offset every packing's elements uniformly to the packings' mean negative-space ratio first "
-                    "(thesis 6.4), and report the offset");
-      cmd->add_option("--container-layer", args->layers.containerLayer, "layer holding the container (default: container)")
-          ->type_name("NAME");
-      cmd->add_option("--elements-layer", args->layers.elementsLayer,
-                      "layer whose child groups are the elements (default: elements)")
-          ->type_name("NAME");
-      cmd->add_option("--fixed-layer", args->layers.fixedLayer,
-                      "layer of fixed elements, positive space for the evenness measure (default: fixed)")
-          ->type_name("NAME");
-      cmd->add_option("--csv", args->csv, "write every curve as CSV (file,curve,r,value)")->type_name("FILE");
-      cmd->add_option("--json", args->json, "write every quantity and curve as JSON")->type_name("FILE");
-      cmd->add_option("--plot", args->plot, "draw Q, H and O of all packings side by side (.png or .svg)")
-          ->type_name("FILE");
-      cmd->add_option("--visualize", args->visualize,
-                      "draw elements offset by R with overlaps in red (thesis Fig. 6.4); needs --visualize-out")
-          ->type_name("R");
-      cmd->add_option("--visualize-out", args->visualizeOut,
-                      "PNG for --visualize (numbered -1, -2 … for several packings)")
-          ->type_name("FILE.png");
-      cmd->add_option("--distance-map", args->distanceMap,
-                      "draw the distance transform of the negative space, one pixel per grid cell, light = far "
-                      "from any element (thesis Fig. 6.3b; numbered -1, -2 … for several packings)")
-          ->type_name("FILE.png");
-      cmd->add_option("--evenness-map", args->evennessMap,
-                      "draw the evenness measure, one pixel per grid cell: channels blue by distance, pockets "
-                      "D > 2h orange and D > 3h red, the medial axis white, filled small holes dark grey "
-                      "(numbered -1, -2 … for several packings)")
-          ->type_name("FILE.png");
-      return [args] { return runMetrics(*args); };
-    }}};
+void declareMetricsOptions(CLI::App& command, MetricsArgs& args) {
+  command.add_option("files", args.files, "Packing SVG files to measure and compare")->required()->type_name("PACKING");
+  command.add_option("--gap", args.gap, "d_gap in the file's units (default: from --report, else estimated)")
+      ->type_name("D");
+  command.add_option("--report", args.report,
+                     "Pak report (pak pack --report) to read d_gap from: \"d_gap\", or \"parameters\".\"gap\" / "
+                     "\"canonical-scale\"")
+      ->type_name("FILE");
+  command.add_option("--radii", args.metrics.radii, "samples of r for Q, H and O (default: 100)")->type_name("N");
+  command.add_option("--grid", args.metrics.gridResolution,
+                     "distance-transform grid cells along the container's bounding square, for the histogram, "
+                     "the distance map and the evenness measure (default: 1000)")
+      ->type_name("N");
+  command.add_option("--bins", args.metrics.histogramBins, "bins of the discrete distance histogram (default: 50)")
+      ->type_name("N");
+  command.add_option("--arc-tolerance", args.metrics.arcTolerance,
+                     "largest error of the polygon offsets and of the outline simplification before them, "
+                     "in the file's units (default 0: 1e-4 of the container's bounding square)")
+      ->type_name("D");
+  command.add_flag("--calibrate", args.calibrate,
+                   "offset every packing's elements uniformly to the packings' mean negative-space ratio first "
+                   "(thesis 6.4), and report the offset");
+  command.add_option("--container-layer", args.layers.containerLayer, "layer holding the container (default: container)")
+      ->type_name("NAME");
+  command.add_option("--elements-layer", args.layers.elementsLayer,
+                     "layer whose child groups are the elements (default: elements)")
+      ->type_name("NAME");
+  command.add_option("--fixed-layer", args.layers.fixedLayer,
+                     "layer of fixed elements, positive space for the evenness measure (default: fixed)")
+      ->type_name("NAME");
+  command.add_option("--csv", args.csv, "write every curve as CSV (file,curve,r,value)")->type_name("FILE");
+  command.add_option("--json", args.json, "write every quantity and curve as JSON")->type_name("FILE");
+  command.add_option("--plot", args.plot, "draw Q, H and O of all packings side by side (.png or .svg)")
+      ->type_name("FILE");
+  command.add_option("--visualize", args.visualize,
+                     "draw elements offset by R with overlaps in red (thesis Fig. 6.4); needs --visualize-out")
+      ->type_name("R");
+  command.add_option("--visualize-out", args.visualizeOut,
+                     "PNG for --visualize (numbered -1, -2 … for several packings)")
+      ->type_name("FILE.png");
+  command.add_option("--distance-map", args.distanceMap,
+                     "draw the distance transform of the negative space, one pixel per grid cell, light = far "
+                     "from any element (thesis Fig. 6.3b; numbered -1, -2 … for several packings)")
+      ->type_name("FILE.png");
+  command.add_option("--evenness-map", args.evennessMap,
+                     "draw the evenness measure, one pixel per grid cell: channels blue by distance, pockets "
+                     "D > 2h orange and D > 3h red, the medial axis white, filled small holes dark grey "
+                     "(numbered -1, -2 … for several packings)")
+      ->type_name("FILE.png");
+}
+
+const CommandRegistrar registrar{subcommand<MetricsArgs>(
+    "metrics",
+    "Measure how even the negative space of packings is (thesis chapter 6): positive/negative "
+    "space ratios, the spherical contact probability Q(r), the distance histogram H(r) = -Q'(r), "
+    "the overlap function O(r), and Q and O at d_gap/2; and the evenness measure: h, the median distance "
+    "to the nearest element or wall along the medial axis of the negative space, and the pocket shares "
+    "P_k, the fraction of the negative space farther than k h from everything (docs/metrics.md). Reads "
+    "Pak's output (layers `container`, `elements` and `fixed`), other layer names, or else takes the "
+    "largest closed shape as the container "
+    "and each top-level group or shape as an element. Lengths are in the file's own units.",
+    declareMetricsOptions, runMetrics)};
 
 }  // namespace
 }  // namespace pak::cli

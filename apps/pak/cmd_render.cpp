@@ -23,8 +23,6 @@ struct RenderOptions {
   std::string output;
   int width = 1000;
   std::string background = "white";
-  bool widthGiven = false;       // SVG output keeps the input's size unless asked
-  bool backgroundGiven = false;  // SVG output gets a background only when asked
 };
 
 std::string lowerCase(std::string text) {
@@ -84,7 +82,9 @@ void addBackground(Drawing& drawing, const Color& color) {
   drawing.groups.insert(drawing.groups.begin(), std::move(group));
 }
 
-int runRender(const RenderOptions& options) {
+int runRender(RenderOptions& options, const CLI::App& command) {
+  const bool widthGiven = command.count("--width") > 0;            // SVG output keeps the input's size unless asked
+  const bool backgroundGiven = command.count("--background") > 0;  // SVG output gets a background only when asked
   std::string extension = extensionOf(options.output);
   if (extension != ".png" && extension != ".svg")
     throw InputError(options.output, "unknown output format '" + extension + "' (use .png or .svg)");
@@ -102,43 +102,38 @@ int runRender(const RenderOptions& options) {
     writePngFile(drawing, options.output, PngOptions{.width = options.width, .background = background});
   } else {
     // Keep the input's own size unless a width was asked for; the height follows the viewBox.
-    if (options.widthGiven && !drawing.viewBox.empty() && drawing.viewBox.width() > 0) {
+    if (widthGiven && !drawing.viewBox.empty() && drawing.viewBox.width() > 0) {
       drawing.width = options.width;
       drawing.height = options.width * drawing.viewBox.height() / drawing.viewBox.width();
     }
-    if (background && options.backgroundGiven) addBackground(drawing, *background);
+    if (background && backgroundGiven) addBackground(drawing, *background);
     writeSvgFile(drawing, options.output);
   }
   return 0;
 }
 
-const CommandRegistrar registrar{Command{
-    "render", [](CLI::App& app) -> std::function<int()> {
-      auto options = std::make_shared<RenderOptions>();
-      CLI::App* command = app.add_subcommand(
-          "render",
-          "Draw an SVG or .path file (any Pak input or output) as Pak understood it: PNG for a quick look, "
-          "or SVG with every curve flattened and every hidden shape dropped.");
-      command->add_option("file", options->input, "Input file (.svg or .path)")->required()->type_name("FILE");
-      command->add_option("-o,--output", options->output,
-                          "Output file; the extension picks the format: .png (anti-aliased raster) or .svg")
-          ->required()
-          ->type_name("OUT");
-      CLI::Option* width = command->add_option("--width", options->width,
-                          "PNG width in pixels, 1 to 16384; the height follows the drawing's aspect ratio "
-                          "(default: 1000). For .svg output it sets the width attribute (default: the input's)")
-          ->type_name("N");
-      CLI::Option* background = command->add_option("--background", options->background,
-                          "Background colour: #rrggbb, #rgb, a name (white, black, gray, red, green, blue, "
-                          "yellow) or none for transparent (default: white for PNG; SVG output gets a "
-                          "background rectangle only when this is given)")
-          ->type_name("COLOR|none");
-      return [options, width, background] {
-        options->widthGiven = width->count() > 0;
-        options->backgroundGiven = background->count() > 0;
-        return runRender(*options);
-      };
-    }}};
+void declareRenderOptions(CLI::App& command, RenderOptions& options) {
+  command.add_option("file", options.input, "Input file (.svg or .path)")->required()->type_name("FILE");
+  command.add_option("-o,--output", options.output,
+                     "Output file; the extension picks the format: .png (anti-aliased raster) or .svg")
+      ->required()
+      ->type_name("OUT");
+  command.add_option("--width", options.width,
+                     "PNG width in pixels, 1 to 16384; the height follows the drawing's aspect ratio "
+                     "(default: 1000). For .svg output it sets the width attribute (default: the input's)")
+      ->type_name("N");
+  command.add_option("--background", options.background,
+                     "Background colour: #rrggbb, #rgb, a name (white, black, gray, red, green, blue, "
+                     "yellow) or none for transparent (default: white for PNG; SVG output gets a "
+                     "background rectangle only when this is given)")
+      ->type_name("COLOR|none");
+}
+
+const CommandRegistrar registrar{subcommand<RenderOptions>(
+    "render",
+    "Draw an SVG or .path file (any Pak input or output) as Pak understood it: PNG for a quick look, "
+    "or SVG with every curve flattened and every hidden shape dropped.",
+    declareRenderOptions, runRender)};
 
 }  // namespace
 }  // namespace pak::cli

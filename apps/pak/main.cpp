@@ -6,6 +6,7 @@
 
 #include "command.hpp"
 #include "pak/error.hpp"
+#include "usage_error.hpp"
 
 namespace pak::cli {
 std::vector<Command>& commandRegistry() {
@@ -36,7 +37,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::Success& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::fprintf(stderr, "pak: error: %s\n", e.what());
+    std::fprintf(stderr, "pak: error: %s\n", usageErrorMessage(app, e).c_str());
     return 2;
   }
   try {
@@ -44,7 +45,10 @@ int main(int argc, char** argv) {
       if (sub && sub->parsed()) return action();
     return 2;
   } catch (const pak::InputError& e) {
-    std::fprintf(stderr, "pak: error: %s\n", e.what());
+    if (e.where().empty())
+      std::fprintf(stderr, "pak: error: %s\n", e.problem().c_str());
+    else
+      std::fprintf(stderr, "pak: error: %s: %s\n", e.where().c_str(), e.problem().c_str());
     return 2;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "pak: internal error: %s\n", e.what());

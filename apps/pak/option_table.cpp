@@ -1,41 +1,63 @@
 #include "option_table.hpp"
 
+#include <charconv>
+#include <cstdint>
+#include <limits>
+
+#include "pak/io/json_syntax_error.hpp"
 #include "pak/io/text_file.hpp"
 
 namespace pak::cli {
 
-ConfigKey booleanKey(std::string name, bool& target) {
-  return {name, [name, &target](const nlohmann::json& value, const std::string& file) {
-            if (!value.is_boolean()) throw InputError(file, "\"" + name + "\" must be true or false");
-            target = value.get<bool>();
-          }};
-}
-
-ConfigKey stringKey(std::string name, std::string& target) {
-  return {name, [name, &target](const nlohmann::json& value, const std::string& file) {
-            if (!value.is_string()) throw InputError(file, "\"" + name + "\" must be a string");
-            target = value.get<std::string>();
-          }};
-}
-
-ConfigKey seedKey(std::string name, std::uint64_t& target) {
-  return {name, [name, &target](const nlohmann::json& value, const std::string& file) {
-            if (!value.is_number_unsigned()) throw InputError(file, "\"" + name + "\" must be a non-negative integer");
-            target = value.get<std::uint64_t>();
-          }};
+std::string nonNegativeInteger(const std::string& text) {
+  std::uint64_t value = 0;
+  const char* end = text.data() + text.size();
+  const auto [stop, error] = std::from_chars(text.data(), end, value);
+  if (error == std::errc::result_out_of_range) return "must be at most " + std::to_string(UINT64_MAX);
+  if (error != std::errc() || stop != end) return "must be a non-negative integer";
+  return "";
 }
 
 nlohmann::json readConfigObject(const std::string& file) {
   nlohmann::json json;
   try {
     json = nlohmann::json::parse(readTextFile(file));
-  } catch (const InputError&) {
-    throw;
-  } catch (const std::exception& e) {
-    throw InputError(file, std::string("not valid JSON: ") + e.what());
+  } catch (const nlohmann::json::exception& e) {
+    throw jsonSyntaxError(file, e.what());
   }
   if (!json.is_object()) throw InputError(file, "expected a JSON object of option names to values");
   return json;
+}
+
+void assignConfigValue(double& target, const nlohmann::json& value, const std::string& key, const std::string& file) {
+  if (!value.is_number()) throw InputError(file, "\"" + key + "\" must be a number");
+  target = value.get<double>();
+}
+
+void assignConfigValue(int& target, const nlohmann::json& value, const std::string& key, const std::string& file) {
+  if (!value.is_number_integer()) throw InputError(file, "\"" + key + "\" must be an integer");
+  constexpr std::int64_t low = std::numeric_limits<int>::min(), high = std::numeric_limits<int>::max();
+  const bool fits = value.is_number_unsigned() ? value.get<std::uint64_t>() <= static_cast<std::uint64_t>(high)
+                                               : value.get<std::int64_t>() >= low && value.get<std::int64_t>() <= high;
+  if (!fits) throw InputError(file, "\"" + key + "\" is out of range for an integer option");
+  target = value.get<int>();
+}
+
+void assignConfigValue(bool& target, const nlohmann::json& value, const std::string& key, const std::string& file) {
+  if (!value.is_boolean()) throw InputError(file, "\"" + key + "\" must be true or false");
+  target = value.get<bool>();
+}
+
+void assignConfigValue(std::string& target, const nlohmann::json& value, const std::string& key,
+                       const std::string& file) {
+  if (!value.is_string()) throw InputError(file, "\"" + key + "\" must be a string");
+  target = value.get<std::string>();
+}
+
+void assignConfigValue(std::uint64_t& target, const nlohmann::json& value, const std::string& key,
+                       const std::string& file) {
+  if (!value.is_number_unsigned()) throw InputError(file, "\"" + key + "\" must be a non-negative integer");
+  target = value.get<std::uint64_t>();
 }
 
 }  // namespace pak::cli

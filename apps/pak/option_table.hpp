@@ -1,114 +1,184 @@
 #pragma once
-// A subcommand's tunable options, listed once: the same name is the command-line flag, the
-// key in a --config file and the key in the report.
+// A subcommand's tunable options, each declared once: its flag (and hidden old spellings), the
+// member it sets, and from that the --config key and the report's "parameters" key, which
+// are the flag's name without "--".
+#include <cstdint>
 #include <functional>
-#include <nlohmann/json.hpp>
+#include <map>
 #include <set>
-#include <span>
 #include <string>
+#include <type_traits>
+#include <utility>
+#include <variant>
 #include <vector>
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 
 #include "pak/error.hpp"
 
 namespace pak::cli {
 
-template <class Options>
-struct NumberOption {
-  const char* name;
-  double Options::*field;
-  const char* help;
-};
-template <class Options>
-struct IntegerOption {
-  const char* name;
-  int Options::*field;
-  const char* help;
+// A member of Root, reached through member pointers: field(&A::b, &B::c) reaches a.b.c.
+template <class Root, class Value>
+struct Field {
+  std::function<Value&(Root&)> get;
+  std::function<const Value&(const Root&)> read;
 };
 
-template <class Options>
-struct OptionTable {
-  std::span<const NumberOption<Options>> numbers;
-  std::span<const IntegerOption<Options>> integers;
+namespace detail {
+template <class T>
+T& follow(T& value) {
+  return value;
+}
+template <class T, class Class, class Member, class... Rest>
+auto& follow(T& value, Member Class::*member, Rest... rest) {
+  return follow(value.*member, rest...);
+}
+}  // namespace detail
 
-  void addTo(CLI::App& command, Options& options) const {
-    for (const auto& o : numbers) command.add_option(std::string("--") + o.name, options.*o.field, o.help)->capture_default_str();
-    for (const auto& o : integers) command.add_option(std::string("--") + o.name, options.*o.field, o.help)->capture_default_str();
-  }
-  void report(nlohmann::json& parameters, const Options& options) const {
-    for (const auto& o : numbers) parameters[o.name] = options.*o.field;
-    for (const auto& o : integers) parameters[o.name] = options.*o.field;
-  }
-  // Copies into `options` what `from` holds for every option not in `keep`.
-  template <class Keep>
-  void copyUnless(Options& options, const Options& from, Keep&& keep) const {
-    for (const auto& o : numbers)
-      if (!keep(o.name)) options.*o.field = from.*o.field;
-    for (const auto& o : integers)
-      if (!keep(o.name)) options.*o.field = from.*o.field;
-  }
-};
-
-// A --config key outside the table: its name and what sets it (throwing InputError, with the
-// file's name, when the JSON value has the wrong type).
-struct ConfigKey {
-  std::string name;
-  std::function<void(const nlohmann::json& value, const std::string& file)> set;
-};
-ConfigKey booleanKey(std::string name, bool& target);
-ConfigKey stringKey(std::string name, std::string& target);
-ConfigKey seedKey(std::string name, std::uint64_t& target);
-
-// The options of a second table as extra --config keys (for a command whose options come in
-// two structs).
-template <class Options>
-std::vector<ConfigKey> tableKeys(const OptionTable<Options>& table, Options& options) {
-  std::vector<ConfigKey> keys;
-  for (const auto& o : table.numbers)
-    keys.push_back({o.name, [&options, o](const nlohmann::json& value, const std::string& file) {
-                      if (!value.is_number()) throw InputError(file, std::string("\"") + o.name + "\" must be a number");
-                      options.*o.field = value.template get<double>();
-                    }});
-  for (const auto& o : table.integers)
-    keys.push_back({o.name, [&options, o](const nlohmann::json& value, const std::string& file) {
-                      if (!value.is_number_integer()) throw InputError(file, std::string("\"") + o.name + "\" must be an integer");
-                      options.*o.field = value.template get<int>();
-                    }});
-  return keys;
+template <class Root, class Member, class... Rest>
+auto field(Member Root::*first, Rest... rest) {
+  using Value = std::remove_reference_t<decltype(detail::follow(std::declval<Root&>(), first, rest...))>;
+  return Field<Root, Value>{[=](Root& root) -> Value& { return detail::follow(root, first, rest...); },
+                            [=](const Root& root) -> const Value& { return detail::follow(root, first, rest...); }};
 }
 
-// Reads `file`, a JSON object of option names to values, into the table's options and the
-// extra keys. Options given on the command line win: their keys are skipped. Returns the keys
-// the file set. Unknown keys, wrong types and bad JSON are InputErrors.
+// `inner` of the member `outer` reaches.
+template <class Root, class Middle, class Value>
+Field<Root, Value> nested(const Field<Root, Middle>& outer, const Field<Middle, Value>& inner) {
+  return {[=](Root& root) -> Value& { return inner.get(outer.get(root)); },
+          [=](const Root& root) -> const Value& { return inner.read(outer.read(root)); }};
+}
+
+template <class Root>
+struct Option {
+  using Binding = std::variant<Field<Root, double>, Field<Root, int>, Field<Root, bool>, Field<Root, std::string>,
+                               Field<Root, std::uint64_t>>;
+  std::string name;  // without "--"
+  Binding field;
+  std::string help;
+  std::vector<std::string> aliases = {};  // old names, accepted on the command line and in --config, not shown
+};
+
+// "" for the text of an integer from 0 to 2^64 − 1 (CLI11 reads "-1" as 2^64 − 1 and
+// saturates larger numbers), else what is wrong.
+std::string nonNegativeInteger(const std::string& text);
+
+// Reads `file`: a JSON object, else an InputError naming the file (and line).
 nlohmann::json readConfigObject(const std::string& file);
-template <class Options>
-std::set<std::string> applyConfigFile(const std::string& file, const CLI::App& command, const OptionTable<Options>& table,
-                                      Options& options, const std::vector<ConfigKey>& extra) {
-  std::set<std::string> set;
-  const nlohmann::json json = readConfigObject(file);
-  for (auto& [key, value] : json.items()) {
-    bool known = false;
-    for (const auto& o : table.numbers) known |= key == o.name;
-    for (const auto& o : table.integers) known |= key == o.name;
-    for (const ConfigKey& k : extra) known |= key == k.name;
-    if (!known) throw InputError(file, "unknown option \"" + key + "\"");
-    if (command.count("--" + key) > 0) continue;  // the command line wins
-    for (const auto& o : table.numbers)
-      if (key == o.name) {
-        if (!value.is_number()) throw InputError(file, "\"" + key + "\" must be a number");
-        options.*o.field = value.template get<double>();
-      }
-    for (const auto& o : table.integers)
-      if (key == o.name) {
-        if (!value.is_number_integer()) throw InputError(file, "\"" + key + "\" must be an integer");
-        options.*o.field = value.template get<int>();
-      }
-    for (const ConfigKey& k : extra)
-      if (key == k.name) k.set(value, file);
-    set.insert(key);
+// Sets `target` from a --config value, or throws InputError naming the file and key.
+void assignConfigValue(double& target, const nlohmann::json& value, const std::string& key, const std::string& file);
+void assignConfigValue(int& target, const nlohmann::json& value, const std::string& key, const std::string& file);
+void assignConfigValue(bool& target, const nlohmann::json& value, const std::string& key, const std::string& file);
+void assignConfigValue(std::string& target, const nlohmann::json& value, const std::string& key,
+                       const std::string& file);
+void assignConfigValue(std::uint64_t& target, const nlohmann::json& value, const std::string& key,
+                       const std::string& file);
+
+template <class Root>
+class OptionTable {
+ public:
+  OptionTable(std::initializer_list<Option<Root>> options) : options_(options) {}
+  explicit OptionTable(std::vector<Option<Root>> options) : options_(std::move(options)) {}
+
+  const std::vector<Option<Root>>& options() const { return options_; }
+
+  OptionTable operator+(const OptionTable& more) const {
+    std::vector<Option<Root>> all = options_;
+    all.insert(all.end(), more.options_.begin(), more.options_.end());
+    return OptionTable(std::move(all));
   }
-  return set;
+
+  // Every option as a CLI11 option (a flag for bool) bound to its member of `root`.
+  void addTo(CLI::App& command, Root& root) const {
+    for (const Option<Root>& o : options_)
+      std::visit([&](const auto& f) { addOption(command, o, f.get(root)); }, o.field);
+  }
+
+  // Whether the command line gave the option, under its name or an alias.
+  bool given(const CLI::App& command, const Option<Root>& o) const {
+    if (command.count("--" + o.name) > 0) return true;
+    for (const std::string& alias : o.aliases)
+      if (command.count("--" + alias) > 0) return true;
+    return false;
+  }
+
+  // Reads the --config `file` into `root`, except the options the command line gave (it wins).
+  // Returns the names of the options the file set. Unknown keys, a key given twice (as a name
+  // and an alias) and values of the wrong type are InputErrors naming the file.
+  std::set<std::string> applyConfig(const std::string& file, const CLI::App& command, Root& root) const {
+    std::map<std::string, std::string> keyOf;  // option name → the key that set it
+    const nlohmann::json json = readConfigObject(file);
+    for (const auto& [key, value] : json.items()) {
+      const Option<Root>* o = find(key);
+      if (!o) throw InputError(file, "unknown option \"" + key + "\"");
+      if (given(command, *o)) continue;
+      if (const auto [at, fresh] = keyOf.emplace(o->name, key); !fresh)
+        throw InputError(file, "\"" + at->second + "\" and \"" + key + "\" are the same option");
+      std::visit([&](const auto& f) { assignConfigValue(f.get(root), value, key, file); }, o->field);
+    }
+    std::set<std::string> set;
+    for (const auto& entry : keyOf) set.insert(entry.first);
+    return set;
+  }
+
+  // The report's "parameters": every option's name and value.
+  void report(nlohmann::json& parameters, const Root& root) const {
+    for (const Option<Root>& o : options_)
+      std::visit([&](const auto& f) { parameters[o.name] = f.read(root); }, o.field);
+  }
+
+  // Copies each option's value from `from` into `to`, except where keep(option) holds.
+  template <class Keep>
+  void copyUnless(Root& to, const Root& from, const Keep& keep) const {
+    for (const Option<Root>& o : options_)
+      if (!keep(o)) std::visit([&](const auto& f) { f.get(to) = f.read(from); }, o.field);
+  }
+
+ private:
+  template <class Value>
+  static void addOption(CLI::App& command, const Option<Root>& o, Value& target) {
+    auto add = [&](const std::string& name, const std::string& help) {
+      if constexpr (std::is_same_v<Value, bool>)
+        return command.add_flag("--" + name, target, help);
+      else
+        return command.add_option("--" + name, target, help)->capture_default_str();
+    };
+    CLI::Option* primary = add(o.name, o.help);
+    if constexpr (std::is_same_v<Value, std::uint64_t>) primary->check(CLI::Validator(nonNegativeInteger, ""));
+    // Hidden, and checked here rather than with CLI11's excludes(), which would print the
+    // alias's (hidden) name in the primary's help.
+    for (const std::string& alias : o.aliases)
+      add(alias, "old name of --" + o.name)->group("")->check(CLI::Validator(
+          [primary, alias](const std::string&) {
+            return primary->count() > 0 ? "--" + alias + ": the same option as " + primary->get_name() + ", given too"
+                                        : std::string();
+          },
+          ""));
+  }
+
+  const Option<Root>* find(const std::string& key) const {
+    for (const Option<Root>& o : options_) {
+      if (o.name == key) return &o;
+      for (const std::string& alias : o.aliases)
+        if (alias == key) return &o;
+    }
+    return nullptr;
+  }
+
+  std::vector<Option<Root>> options_;
+};
+
+// The options of `table`, on the member `at` of Root.
+template <class Root, class Sub>
+OptionTable<Root> mounted(const OptionTable<Sub>& table, const Field<Root, Sub>& at) {
+  std::vector<Option<Root>> options;
+  for (const Option<Sub>& o : table.options()) {
+    auto binding = [&](const auto& f) -> typename Option<Root>::Binding { return nested(at, f); };
+    options.push_back({o.name, std::visit(binding, o.field), o.help, o.aliases});
+  }
+  return OptionTable<Root>(std::move(options));
 }
 
 }  // namespace pak::cli

@@ -1,7 +1,8 @@
 #pragma once
-// Invalid input (a file, an SVG, a parameter) throws InputError, whose message says what is
-// wrong and where: "<file>: <what and where>". The CLI prints "pak: error: <message>" and
-// exits with code 2. Programmer mistakes are assertions instead.
+// Invalid input (a file, an SVG, a parameter) throws InputError: *where* (a file, "file:line",
+// an element id or an --option) and *what* is wrong, apart; what() is "<where>: <what>". The
+// CLI prints "pak: error: <where>: <what>" and exits with code 2. Programmer mistakes are
+// assertions instead.
 #include <stdexcept>
 #include <string>
 
@@ -9,8 +10,20 @@ namespace pak {
 
 class InputError : public std::runtime_error {
  public:
-  InputError(const std::string& where, const std::string& what)
-      : std::runtime_error(where.empty() ? what : where + ": " + what) {}
+  InputError(const std::string& where, const std::string& problem)
+      : std::runtime_error(where.empty() ? problem : where + ": " + problem), where_(where), problem_(problem) {}
+
+  const std::string& where() const { return where_; }      // empty: the message says where itself
+  const std::string& problem() const { return problem_; }  // what is wrong, without `where`
+
+ private:
+  std::string where_, problem_;
 };
+
+// `error`, said to be at `where` when it says nowhere itself: a geometry routine deep inside a
+// packer knows no file, the packer knows its scene's.
+inline InputError attributed(const InputError& error, const std::string& where) {
+  return error.where().empty() && !where.empty() ? InputError(where, error.problem()) : error;
+}
 
 }  // namespace pak

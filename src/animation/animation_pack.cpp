@@ -53,30 +53,31 @@ struct Instance {
   std::vector<SpacetimeElementSetup::Target> targets;
 };
 
+// Each error names the option as `pak animate` spells it (the flag is also the --config key).
 void checkOptions(const AnimationOptions& o, int slices) {
-  auto positive = [](double v, const char* name) {
-    if (!(v > 0.0) || !std::isfinite(v)) throw InputError("", std::string(name) + " must be a positive number");
+  auto positive = [](double v, const char* option) {
+    if (!(v > 0.0) || !std::isfinite(v)) throw InputError(option, "must be a positive number");
   };
-  if (slices < 2 || slices > 1000) throw InputError("", "slices must be between 2 and 1000");
-  if (!(o.elementArea >= 0.0 && o.elementArea <= 1.0)) throw InputError("", "element area must be in [0, 1]");
-  positive(o.gap, "gap");
-  if (!(o.meshSpacing >= 0.0) || !std::isfinite(o.meshSpacing)) throw InputError("", "mesh spacing must not be negative");
-  if (!(o.initialScale > 0.0 && o.initialScale <= 1.0)) throw InputError("", "initial scale must be in (0, 1]");
-  positive(o.closeness, "closeness");
-  if (o.maxIterations < 0) throw InputError("", "max iterations must not be negative");
-  if (o.stallWindow < 1) throw InputError("", "stall window must be at least 1");
-  if (!(o.stallGrowth >= 0.0) || !std::isfinite(o.stallGrowth)) throw InputError("", "stall growth must not be negative");
-  const SpacetimeParameters& p = o.simulation;
-  positive(p.timeStep, "time step");
-  positive(p.velocityCap, "velocity cap");
-  positive(p.cellSize, "cell size");
-  positive(p.timeLength, "time length");
-  positive(p.maxGrowth, "max growth");
-  if (!(p.damping >= 0.0 && p.damping < 1.0)) throw InputError("", "damping must be in [0, 1)");
-  for (double k : {p.repulsionStrength, p.overlapStrength, p.boundaryStrength, p.edgeStrength, p.negativeSpaceStrength,
-                   p.timeStrength, p.targetStrength, p.temporalStrength, p.soft, p.growthRate, p.outsideTolerance,
-                   o.torsionStrength})
-    if (!(k >= 0.0) || !std::isfinite(k)) throw InputError("", "force strengths and rates must be non-negative numbers");
+  auto nonNegative = [](double v, const char* option) {
+    if (!(v >= 0.0) || !std::isfinite(v)) throw InputError(option, "must be a non-negative number");
+  };
+  if (slices < 2 || slices > 1000) throw InputError("--slices", "must be between 2 and 1000");
+  if (!(o.elementArea >= 0.0 && o.elementArea <= 1.0)) throw InputError("--element-area", "must be in [0, 1]");
+  positive(o.gap, "--gap");
+  nonNegative(o.meshSpacing, "--mesh-spacing");
+  if (!(o.initialScale > 0.0 && o.initialScale <= 1.0)) throw InputError("--initial-scale", "must be in (0, 1]");
+  checkSimulationParameters(o.simulation);
+  positive(o.simulation.cellSize, "--cell-size");  // the exact repulsion reach: no packer default
+  const SpacetimeParameters& p = o.spacetime;
+  nonNegative(p.timeStrength, "--time-springs");
+  nonNegative(p.targetStrength, "--target");
+  nonNegative(p.temporalStrength, "--temporal");
+  positive(p.maxGrowth, "--max-growth");
+  positive(p.timeLength, "--time-length");
+  positive(o.stop.closeness, "--closeness");
+  nonNegative(o.stop.stallGrowth, "--stall-growth");
+  if (o.stop.stallWindow < 1) throw InputError("--stall-window", "must be at least 1");
+  if (o.stop.maxIterations < 0) throw InputError("--max-iterations", "must not be negative");
 }
 
 double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
@@ -117,12 +118,13 @@ Vec2 rotate(Vec2 p, double angle) { return rotated(p, angle); }
 
 AnimatedPacking packAnimation(const Scene& scene, const Library& library, const AnimationScript& script,
                               const AnimationOptions& options, const AnimationCallbacks& callbacks,
-                              const AnimationState* resumeFrom) {
+                              const AnimationState* resumeFrom) try {
   const auto started = std::chrono::steady_clock::now();
   const int slices = options.slices > 0 ? options.slices : script.slices;
   checkOptions(options, slices);
-  if (script.elements.empty()) throw InputError("", "the animation has no elements");
-  if (library.size() != script.elements.size()) throw InputError("", "one element art per animation element is needed");
+  if (script.elements.empty()) throw InputError(script.source, "the animation has no elements");
+  if (library.size() != script.elements.size())
+    throw InputError(script.source, "one element art per animation element is needed");
   const Box box = bounds(scene.container);
   const double inputArea = area(scene.container);
   if (box.empty() || !(inputArea > 0.0)) throw InputError(scene.source, "container has no area");
@@ -163,7 +165,7 @@ AnimatedPacking packAnimation(const Scene& scene, const Library& library, const 
       ElementMeshOptions meshOptions;
       meshOptions.gap = gap;
       meshOptions.spacing = spacing;
-      meshOptions.seed = options.seed * 7919 + meshes.size();
+      meshOptions.seed = options.run.seed * 7919 + meshes.size();
       try {
         shared.mesh = buildElementMesh(shared.art, transformed(art.outline, scale, -centre * scale), meshOptions);
       } catch (const InputError& error) {
@@ -186,7 +188,7 @@ AnimatedPacking packAnimation(const Scene& scene, const Library& library, const 
 
   // --- Initial configuration (5.4): guided elements along their targets, then blue-noise
   // seeds for the others, away from the guided tubes; everything shrunk to fit.
-  Rng rng(options.seed);
+  Rng rng(options.run.seed);
   std::vector<Instance> instances;
   std::vector<int> guidedInstance(types.size(), -1);
   double largestRadius = 0.0;
@@ -236,7 +238,7 @@ AnimatedPacking packAnimation(const Scene& scene, const Library& library, const 
       BlueNoiseOptions noise;
       noise.radius = r;
       noise.boundaryMargin = 0.5 * r;
-      noise.seed = options.seed * 31 + attempt;
+      noise.seed = options.run.seed * 31 + attempt;
       const double g = std::min(options.initialScale, 0.45 * r / largestRadius);
       seeds.clear();
       for (Vec2 p : blueNoiseSample(container, noise)) {
@@ -277,8 +279,8 @@ AnimatedPacking packAnimation(const Scene& scene, const Library& library, const 
   }
 
   // --- Simulation (5.5).
-  ThreadPool pool(options.threads);
-  SpacetimeSimulation sim(containerIndex, containerArea, slices, options.simulation, pool);
+  ThreadPool pool(options.run.threads);
+  SpacetimeSimulation sim(containerIndex, containerArea, slices, options.simulation, options.spacetime, pool);
   for (const Instance& instance : instances) {
     const ElementType& type = types[instance.type];
     SpacetimeElementSetup setup;
@@ -286,7 +288,7 @@ AnimatedPacking packAnimation(const Scene& scene, const Library& library, const 
     setup.reference = instance.reference;
     setup.referenceCentre = instance.centre;
     setup.initialGrowth = initialGrowth;
-    setup.torsionStrength = type.spec->orientation ? options.torsionStrength : 0.0;
+    setup.torsionStrength = type.spec->orientation ? options.simulation.torsionStrength : 0.0;
     setup.targets = instance.targets;
     sim.addElement(setup);
   }
@@ -299,12 +301,12 @@ AnimatedPacking packAnimation(const Scene& scene, const Library& library, const 
         for (std::size_t i = 0; i < types.size(); ++i)
           if (types[i].spec->id == type.spec->loopTo && guidedInstance[i] >= 0) to = guidedInstance[i], found = true;
         if (!found)
-          throw InputError("", "element '" + type.spec->id + "' loops to '" + type.spec->loopTo +
+          throw InputError(script.source, "element '" + type.spec->id + "' loops to '" + type.spec->loopTo +
                                    "', which is not a guided element; loop_to joins guided elements");
       }
       const ElementType& toType = types[instances[to].type];
       if (toType.meshIndex != type.meshIndex)
-        throw InputError("", "element '" + type.spec->id + "' loops to '" + toType.spec->id +
+        throw InputError(script.source, "element '" + type.spec->id + "' loops to '" + toType.spec->id +
                                  "', drawn from another SVG; a loop joins copies of one drawing");
       const int n = static_cast<int>(meshes[type.meshIndex].mesh.mesh.vertices.size());
       sim.addLoop(static_cast<int>(e), to,
@@ -316,7 +318,7 @@ AnimatedPacking packAnimation(const Scene& scene, const Library& library, const 
   if (resumeFrom) {
     if (resumeFrom->positions.size() != sim.vertexCount() || resumeFrom->growth.size() != sim.growth().size() ||
         resumeFrom->velocities.size() != sim.vertexCount())
-      throw InputError("", "the checkpoint was made for other inputs or options (its sizes do not match)");
+      throw InputError("--resume", "the checkpoint was made for other inputs or options (its sizes do not match)");
     sim.restoreState(resumeFrom->iteration, resumeFrom->positions, resumeFrom->velocities, resumeFrom->growth);
   }
   const auto setupDone = std::chrono::steady_clock::now();
@@ -333,11 +335,11 @@ AnimatedPacking packAnimation(const Scene& scene, const Library& library, const 
     p.minGrowth = sim.minGrowth();
     return p;
   };
-  std::vector<double> meanGrowth(options.stallWindow + 1, 0.0);
+  std::vector<double> meanGrowth(options.stop.stallWindow + 1, 0.0);
   int recorded = 0;
   if (resumeFrom && !resumeFrom->recentMeanGrowth.empty()) {
     if (resumeFrom->recentMeanGrowth.size() != meanGrowth.size())
-      throw InputError("", "the checkpoint was made with another stall window");
+      throw InputError("--resume", "the checkpoint was made with another --stall-window");
     meanGrowth = resumeFrom->recentMeanGrowth;
     recorded = resumeFrom->recorded;
   }
@@ -347,7 +349,7 @@ AnimatedPacking packAnimation(const Scene& scene, const Library& library, const 
   result.stopReason = AnimationStop::IterationCap;
   // Mean growth of the last stallWindow + 1 iterations, by iteration number; checkpoints keep
   // it, so a resumed run stops where the uninterrupted one does.
-  while (sim.iteration() < options.maxIterations) {
+  while (sim.iteration() < options.stop.maxIterations) {
     sim.step();
     const int it = sim.iteration();
     double mean = 0.0;
@@ -357,16 +359,16 @@ AnimatedPacking packAnimation(const Scene& scene, const Library& library, const 
     ++recorded;
     if (callbacks.onCheckpoint && callbacks.checkpointEvery > 0 && it % callbacks.checkpointEvery == 0) callbacks.onCheckpoint(state());
     if (callbacks.onProgress && callbacks.progressEvery > 0 && it % callbacks.progressEvery == 0) callbacks.onProgress(progress());
-    if (sim.largestSliceGap() < options.closeness) {
+    if (sim.largestSliceGap() < options.stop.closeness) {
       result.stopReason = AnimationStop::AllTouching;
       break;
     }
-    if (sim.minGrowth() >= options.simulation.maxGrowth) {
+    if (sim.minGrowth() >= options.spacetime.maxGrowth) {
       result.stopReason = AnimationStop::GrowthCap;
       break;
     }
-    if (recorded > options.stallWindow &&
-        mean - meanGrowth[(it - options.stallWindow) % meanGrowth.size()] < options.stallGrowth) {
+    if (recorded > options.stop.stallWindow &&
+        mean - meanGrowth[(it - options.stop.stallWindow) % meanGrowth.size()] < options.stop.stallGrowth) {
       result.stopReason = AnimationStop::Stalled;
       break;
     }
@@ -392,7 +394,7 @@ AnimatedPacking packAnimation(const Scene& scene, const Library& library, const 
       std::vector<Vec2> vertices(n);
       for (int v = 0; v < n; ++v) vertices[v] = frame.toInput(spatial(sim.positions()[begin + s * n + v]));
       out.slices.push_back(std::move(vertices));
-      out.sliceTimes.push_back(sim.positions()[begin + s * n].t / options.simulation.timeLength);
+      out.sliceTimes.push_back(sim.positions()[begin + s * n].t / options.spacetime.timeLength);
       out.sliceGrowth.push_back(sim.growth()[e * slices + s]);
     }
     result.elements.push_back(std::move(out));
@@ -407,11 +409,13 @@ AnimatedPacking packAnimation(const Scene& scene, const Library& library, const 
   result.envelopeTriangles = sim.envelopeTriangleCount();
   result.slices = slices;
   result.threads = pool.threadCount();
-  result.seed = options.seed;
+  result.seed = options.run.seed;
   const auto finished = std::chrono::steady_clock::now();
   result.setupSeconds = std::chrono::duration<double>(setupDone - started).count();
   result.seconds = std::chrono::duration<double>(finished - started).count();
   return result;
+} catch (const InputError& error) {
+  throw attributed(error, scene.source);
 }
 
 }  // namespace pak

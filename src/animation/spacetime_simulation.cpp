@@ -15,8 +15,14 @@ constexpr double kFar = std::numeric_limits<double>::infinity();
 }  // namespace
 
 SpacetimeSimulation::SpacetimeSimulation(const RegionIndex& container, double containerArea, int slices,
-                                         const SpacetimeParameters& parameters, ThreadPool& pool)
-    : container_(container), containerArea_(containerArea), slices_(slices), parameters_(parameters), pool_(pool) {
+                                         const SimulationParameters& parameters, const SpacetimeParameters& spacetime,
+                                         ThreadPool& pool)
+    : container_(container),
+      containerArea_(containerArea),
+      slices_(slices),
+      parameters_(parameters),
+      spacetime_(spacetime),
+      pool_(pool) {
   assert(slices >= 2);
 }
 
@@ -30,7 +36,7 @@ int SpacetimeSimulation::addElement(const SpacetimeElementSetup& setup) {
   const int sliceBegin = static_cast<int>(growth_.size());
   elements_.push_back({&mesh, vertexBegin, n, sliceBegin, setup.torsionStrength});
 
-  const double dt = parameters_.timeLength / (slices_ - 1);
+  const double dt = spacetime_.timeLength / (slices_ - 1);
   for (int s = 0; s < slices_; ++s) {
     const int slice = sliceBegin + s;
     const double t = s * dt;
@@ -65,9 +71,9 @@ int SpacetimeSimulation::addElement(const SpacetimeElementSetup& setup) {
     const int lower = vertexBegin + s * n, upper = lower + n;
     for (int k = 0; k < nb; ++k) {
       const int a = lower + k, b = lower + (k + 1) % nb, c = upper + k, d = upper + (k + 1) % nb;
-      pending_.push_back({a, c, parameters_.timeStrength});
-      pending_.push_back({a, d, parameters_.timeStrength});
-      pending_.push_back({b, c, parameters_.timeStrength});
+      pending_.push_back({a, c, spacetime_.timeStrength});
+      pending_.push_back({a, d, spacetime_.timeStrength});
+      pending_.push_back({b, c, spacetime_.timeStrength});
       envelope_.push_back({a, b, c});  // outward normal (b − a) × (c − a) for a ring that
       envelope_.push_back({a, d, c});  // turns counter-clockwise seen from +t
       envelopeElement_.push_back(element);
@@ -165,7 +171,7 @@ void SpacetimeSimulation::finalize(const Box& area) {
   gridOrigin_ = {area.min.x - cell, area.min.y - cell, -cell};
   nx_ = std::max(1, static_cast<int>(std::ceil((area.width() + 2 * cell) / cell)));
   ny_ = std::max(1, static_cast<int>(std::ceil((area.height() + 2 * cell) / cell)));
-  nt_ = std::max(1, static_cast<int>(std::ceil((parameters_.timeLength + 2 * cell) / cell)));
+  nt_ = std::max(1, static_cast<int>(std::ceil((spacetime_.timeLength + 2 * cell) / cell)));
   const std::size_t cells = static_cast<std::size_t>(nx_) * ny_ * nt_;
   const std::size_t nt = envelope_.size();
   envelopeCentroid_.assign(nt, {});
@@ -370,7 +376,7 @@ bool SpacetimeSimulation::insideElementAt(int element, Vec3 x) const {
 }
 
 void SpacetimeSimulation::computeForces(std::size_t begin, std::size_t end) {
-  const SpacetimeParameters& P = parameters_;
+  const SimulationParameters& P = parameters_;
   for (std::size_t v = begin; v < end; ++v) {
     const int slice = sliceOf_[v];
     const ElementRecord& element = elements_[sliceElement_[slice]];
@@ -428,10 +434,10 @@ void SpacetimeSimulation::computeForces(std::size_t begin, std::size_t end) {
       f += Vec3{turn.x, turn.y, 0.0};
     }
     // Eq. 5.2: the temporal force keeps the vertex near its slice's time.
-    f.t += P.temporalStrength * (restTime_[slice] - x.t);
+    f.t += spacetime_.temporalStrength * (restTime_[slice] - x.t);
     // Target-point spring of a guided element (5.4).
     if (const Vec2 target = targetPull_[v]; !std::isnan(target.x)) {
-      const Vec2 pull = (target - xy) * P.targetStrength;
+      const Vec2 pull = (target - xy) * spacetime_.targetStrength;
       f += Vec3{pull.x, pull.y, 0.0};
     }
     force_[v] = f;
@@ -439,7 +445,7 @@ void SpacetimeSimulation::computeForces(std::size_t begin, std::size_t end) {
 }
 
 void SpacetimeSimulation::integrate(std::size_t begin, std::size_t end) {
-  const SpacetimeParameters& P = parameters_;
+  const SimulationParameters& P = parameters_;
   const double keep = 1.0 - P.damping;
   for (std::size_t v = begin; v < end; ++v) {
     Vec3 vel = (velocity_[v] + force_[v] * P.timeStep) * keep;
@@ -462,7 +468,7 @@ void SpacetimeSimulation::applySliceConstraints(std::size_t elementBegin, std::s
       if (s == 0) {
         t = 0.0;
       } else if (s == slices_ - 1) {
-        t = parameters_.timeLength;
+        t = spacetime_.timeLength;
       } else {
         t = 0.0;
         for (int v = base; v < base + n; ++v) t += position_[v].t;
@@ -526,13 +532,13 @@ void SpacetimeSimulation::updateSlices(std::size_t begin, std::size_t end) {
     sliceOverlapping_[s] = overlapping ? 1 : 0;
     sliceOutside_[s] = outside ? 1 : 0;
     sliceGap_[s] = gap;
-    const double grown = std::min(parameters_.maxGrowth, growth_[s] + parameters_.growthRate * parameters_.timeStep);
+    const double grown = std::min(spacetime_.maxGrowth, growth_[s] + parameters_.growthRate * parameters_.timeStep);
     bool smooth = true;
-    if (parameters_.growthSpread > 0.0) {  // neighbours in t as they were before this step
+    if (spacetime_.growthSpread > 0.0) {  // neighbours in t as they were before this step
       const int first = element.sliceBegin, last = first + slices_ - 1;
       const int k = static_cast<int>(s);
-      if (k > first) smooth = smooth && grown <= previousGrowth_[k - 1] + parameters_.growthSpread;
-      if (k < last) smooth = smooth && grown <= previousGrowth_[k + 1] + parameters_.growthSpread;
+      if (k > first) smooth = smooth && grown <= previousGrowth_[k - 1] + spacetime_.growthSpread;
+      if (k < last) smooth = smooth && grown <= previousGrowth_[k + 1] + spacetime_.growthSpread;
     }
     if (!overlapping && !outside && smooth) growth_[s] = grown;
   }
@@ -555,7 +561,7 @@ void SpacetimeSimulation::step() {
   for (std::size_t s = 0; s < ns; ++s) {
     area += sliceArea_[s];
     largestGap = std::max(largestGap, sliceGap_[s]);
-    growing += (!sliceOverlapping_[s] && !sliceOutside_[s] && growth_[s] < parameters_.maxGrowth) ? 1 : 0;
+    growing += (!sliceOverlapping_[s] && !sliceOutside_[s] && growth_[s] < spacetime_.maxGrowth) ? 1 : 0;
     overlapping += sliceOverlapping_[s];
   }
   fill_ = ns > 0 ? area / (containerArea_ * slices_) : 0.0;

@@ -13,6 +13,7 @@
 #include "pak/animation/spacetime_parameters.hpp"
 #include "pak/geom/vec3.hpp"
 #include "pak/sim/element_mesh.hpp"
+#include "pak/sim/simulation_parameters.hpp"
 #include "sim/parallel.hpp"
 #include "sim/region_index.hpp"
 
@@ -33,8 +34,9 @@ struct SpacetimeElementSetup {
 
 class SpacetimeSimulation {
  public:
+  // `parameters` as resolved by the packer: a positive cell size, the exact repulsion reach.
   SpacetimeSimulation(const RegionIndex& container, double containerArea, int slices,
-                      const SpacetimeParameters& parameters, ThreadPool& pool);
+                      const SimulationParameters& parameters, const SpacetimeParameters& spacetime, ThreadPool& pool);
 
   int addElement(const SpacetimeElementSetup& setup);
   // Loop constraint (5.5.2): `from`'s last slice joins `to`'s first slice (same mesh). The
@@ -103,7 +105,8 @@ class SpacetimeSimulation {
   const RegionIndex& container_;
   double containerArea_;
   int slices_;
-  SpacetimeParameters parameters_;
+  SimulationParameters parameters_;
+  SpacetimeParameters spacetime_;
   ThreadPool& pool_;
   int iteration_ = 0;
   double fill_ = 0.0, largestSliceGap_ = 0.0;

@@ -27,23 +27,25 @@ double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(
 // length scale an element may become keeps a lone element in a wide blob recognisable.
 constexpr double kMaxWidthOverLengthScale = 2.5;
 
+// Each error names the option as `pak flow` spells it (the flag is also the --config key).
 void validate(const FlowOptions& o) {
   auto positive = [](double v) { return std::isfinite(v) && v > 0.0; };
-  if (!positive(o.gap)) throw InputError("", "--gap must be a positive number");
-  if (!(o.stopRatio > 0.0 && o.stopRatio <= 1.0)) throw InputError("", "the stop ratio must be in (0, 1]");
-  if (!positive(o.minLength) || !positive(o.maxLength) || o.minLength > o.maxLength)
-    throw InputError("", "--min-length and --max-length must be positive with min ≤ max");
-  if (!positive(o.sampleSpacing)) throw InputError("", "--sample-spacing must be positive");
-  if (o.fieldResolution < 8 || o.fieldResolution > 4096) throw InputError("", "--field-resolution must be 8 to 4096");
-  if (o.blobResolution < 16 || o.blobResolution > 4096) throw InputError("", "--blob-resolution must be 16 to 4096");
-  if (o.lrSamples < 4 || o.lrSamples > 10000) throw InputError("", "--lr-samples must be 4 to 10000");
-  if (!(std::isfinite(o.spacing) && o.spacing >= 0.0)) throw InputError("", "--spacing must be ≥ 0");
-  if (o.iterations < 0 || o.iterations > 10000) throw InputError("", "--iterations must be 0 to 10000");
-  if (!(o.growthTolerance > 0.0 && o.growthTolerance <= 1.0)) throw InputError("", "--growth-tolerance must be in (0, 1]");
-  if (!positive(o.growthLimit)) throw InputError("", "--growth-limit must be positive");
-  if (o.maxRotationDegrees < 0 || o.maxRotationDegrees > 45) throw InputError("", "--max-rotation must be 0 to 45 degrees");
-  if (!(std::isfinite(o.fillGapsInset) && o.fillGapsInset >= 0.0)) throw InputError("", "--fill-gaps-inset must be ≥ 0");
-  if (o.mirrorX && !std::isfinite(*o.mirrorX)) throw InputError("", "--mirror needs a finite x");
+  if (!positive(o.gap)) throw InputError("--gap", "must be a positive number");
+  if (!(o.stopRatio > 0.0 && o.stopRatio <= 1.0)) throw InputError("--stop-ratio", "must be in (0, 1]");
+  if (!positive(o.minLength)) throw InputError("--min-length", "must be a positive number");
+  if (!positive(o.maxLength) || o.minLength > o.maxLength)
+    throw InputError("--max-length", "must be a positive number, at least --min-length");
+  if (!positive(o.sampleSpacing)) throw InputError("--sample-spacing", "must be a positive number");
+  if (o.fieldResolution < 8 || o.fieldResolution > 4096) throw InputError("--field-resolution", "must be 8 to 4096");
+  if (o.blobResolution < 16 || o.blobResolution > 4096) throw InputError("--blob-resolution", "must be 16 to 4096");
+  if (o.lrSamples < 4 || o.lrSamples > 10000) throw InputError("--lr-samples", "must be 4 to 10000");
+  if (!(std::isfinite(o.spacing) && o.spacing >= 0.0)) throw InputError("--spacing", "must be ≥ 0");
+  if (o.iterations < 0 || o.iterations > 10000) throw InputError("--iterations", "must be 0 to 10000");
+  if (!(o.growthTolerance > 0.0 && o.growthTolerance <= 1.0)) throw InputError("--growth-tolerance", "must be in (0, 1]");
+  if (!positive(o.growthLimit)) throw InputError("--growth-limit", "must be a positive number");
+  if (o.maxRotationDegrees < 0 || o.maxRotationDegrees > 45) throw InputError("--max-rotation", "must be 0 to 45 degrees");
+  if (!(std::isfinite(o.fillGapsInset) && o.fillGapsInset >= 0.0)) throw InputError("--fill-gaps-inset", "must be ≥ 0");
+  if (o.mirrorX && !std::isfinite(*o.mirrorX)) throw InputError("--mirror", "needs a finite x");
 }
 
 Region rectangle(Box b) {
@@ -147,7 +149,7 @@ FlowPacking FlowPacker::run() {
 }
 
 void FlowPacker::setUp() {
-  if (types_.empty()) throw InputError("", "the element library is empty");
+  if (types_.empty()) throw InputError("--elements", "the element library is empty");
   Box box = bounds(scene_.container);
   for (const Shape& s : scene_.fixed) box.add(bounds(s));
   const double lCanvas = std::max(box.width(), box.height());
@@ -479,10 +481,12 @@ void FlowPacker::mirror() {
 }  // namespace
 
 FlowPacking packFlow(const Scene& scene, const Library& library, const FlowOptions& options,
-                     const FlowCallbacks& callbacks) {
+                     const FlowCallbacks& callbacks) try {
   validate(options);
   FlowPacker packer(scene, library, options, callbacks);
   return packer.run();
+} catch (const InputError& error) {
+  throw attributed(error, scene.source);
 }
 
 double flowFill(const FlowPacking& packing) {

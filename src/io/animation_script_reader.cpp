@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "pak/error.hpp"
+#include "pak/io/json_syntax_error.hpp"
 #include "pak/io/text_file.hpp"
 
 namespace pak {
@@ -186,12 +187,13 @@ class Reader {
     try {
       root = Json::parse(text);
     } catch (const Json::exception& error) {  // syntax, or a number too large for a double
-      fail("", std::string("not valid JSON (") + error.what() + ")");
+      throw jsonSyntaxError(where_, error.what());
     }
     requireObject(root, "", "a JSON object (the animation file's top level)");
     checkKeys(root, "", {"slices", "frames", "loop", "duration", "elements"});
 
     AnimationScript script;
+    script.source = where_;
     if (root.contains("slices")) script.slices = integer(root["slices"], "slices", 2, kMaxSlices);
     if (root.contains("frames")) script.frames = integer(root["frames"], "frames", 1, kMaxFrames);
     if (root.contains("loop")) {

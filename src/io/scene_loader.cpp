@@ -273,17 +273,20 @@ LoadedScene loadScene(const std::string& path, const SvgReadOptions& options) {
 
 LoadedScene loadScene(const std::string& path, const SceneOptions& sceneOptions, const SvgReadOptions& options) {
   LoadedScene loaded = sceneFromDocument(readDocument(path, options), sceneOptions);
-  // Each distinct data-elements list is read once.
+  // Each distinct data-elements list is read once; its warnings are the scene's.
   std::map<std::vector<std::string>, Library> libraries;
   for (ContainerPart& part : loaded.scene.containers) {
     if (part.elementFiles.empty()) continue;
     auto found = libraries.find(part.elementFiles);
     if (found == libraries.end()) {
+      std::vector<LoadedElement> elements;
       try {
-        found = libraries.emplace(part.elementFiles, loadLibrary(part.elementFiles, options)).first;
+        elements = loadElements(part.elementFiles, options);
       } catch (const InputError& error) {
         throw InputError(path, std::string("data-elements: ") + error.what());
       }
+      for (const LoadedElement& e : elements) loaded.warnings.insert(loaded.warnings.end(), e.warnings.begin(), e.warnings.end());
+      found = libraries.emplace(part.elementFiles, libraryOf(elements)).first;
     }
     part.library = found->second;
   }

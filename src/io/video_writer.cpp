@@ -15,6 +15,7 @@
 #include <cstring>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -165,7 +166,7 @@ void writeVideo(const std::vector<Drawing>& frames, const std::string& path, con
 
   // Feed the frames; whatever happens, close the pipe and wait, so no child is left behind.
   bool fed = true;
-  std::string renderError;
+  std::optional<InputError> renderError;  // a frame that failed to render
   {
     SigpipeBlock block;
     try {
@@ -173,15 +174,17 @@ void writeVideo(const std::vector<Drawing>& frames, const std::string& path, con
         RgbaImage image = raster::toRgba(raster::renderSurface(frames[i], png, path).get());
         fed = writeAll(pipeEnds[1], image.rgba.data(), image.rgba.size());
       }
+    } catch (const InputError& error) {
+      renderError = error;
     } catch (const std::exception& error) {
-      renderError = error.what();
+      renderError = InputError(path, error.what());
     }
     ::close(pipeEnds[1]);
   }
   int status = waitFor(pid);
-  if (!renderError.empty() || !fed || status != 0) {
+  if (renderError || !fed || status != 0) {
     ::unlink(temporary.c_str());
-    if (!renderError.empty()) throw InputError("", renderError);
+    if (renderError) throw *renderError;
     std::string detail = log ? lastLine(log.get()) : std::string();
     throw InputError(path, "ffmpeg failed" + (detail.empty() ? std::string() : ": " + detail));
   }

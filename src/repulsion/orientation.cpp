@@ -20,19 +20,18 @@ bool parseNumber(const std::string& text, double& value) {
 }  // namespace
 
 OrientationField parseOrientationField(const std::string& text) {
-  const std::string usage = "orientation field '" + text +
-                            "' is not AXIS:FROM:TO (AXIS x or y, angles in degrees, e.g. x:0:180)";
+  const std::string usage = "'" + text + "' is not AXIS:FROM:TO (AXIS x or y, angles in degrees, e.g. x:0:180)";
   std::size_t first = text.find(':');
   std::size_t second = first == std::string::npos ? first : text.find(':', first + 1);
-  if (second == std::string::npos || text.find(':', second + 1) != std::string::npos) throw InputError("", usage);
+  if (second == std::string::npos || text.find(':', second + 1) != std::string::npos) throw InputError("--orientation-field", usage);
   OrientationField field;
   std::string axis = text.substr(0, first);
-  if (axis != "x" && axis != "y" && axis != "X" && axis != "Y") throw InputError("", usage);
+  if (axis != "x" && axis != "y" && axis != "X" && axis != "Y") throw InputError("--orientation-field", usage);
   field.axis = static_cast<char>(axis[0] | 0x20);
   if (!parseNumber(text.substr(first + 1, second - first - 1), field.fromDegrees) ||
       !parseNumber(text.substr(second + 1), field.toDegrees) || std::abs(field.fromDegrees) > 1e6 ||
       std::abs(field.toDegrees) > 1e6)
-    throw InputError("", usage);
+    throw InputError("--orientation-field", usage);
   return field;
 }
 
@@ -40,7 +39,7 @@ OrientationMode parseOrientationMode(const std::string& text) {
   if (text == "random") return OrientationMode::Random;
   if (text == "upright") return OrientationMode::Upright;
   if (text == "field") return OrientationMode::Field;
-  throw InputError("", "orientation '" + text + "' is not one of random, upright, field");
+  throw InputError("--orientation", "'" + text + "' is not one of random, upright, field");
 }
 
 const char* toString(OrientationMode mode) {

@@ -21,8 +21,9 @@ inline Vec2 closestOnSegment(Vec2 p, Vec2 a, Vec2 b, double& t) {
 }  // namespace
 
 PackingSimulation::PackingSimulation(const RegionIndex& container, double containerArea,
-                                     const SimulationParameters& parameters, ThreadPool& pool)
-    : container_(container), containerArea_(containerArea), parameters_(parameters), pool_(pool) {}
+                                     const SimulationParameters& parameters, ThreadPool& pool,
+                                     const PackingDomain& domain)
+    : container_(container), containerArea_(containerArea), parameters_(parameters), domain_(domain), pool_(pool) {}
 
 int PackingSimulation::addMesh(const ElementMesh& mesh, int type, Vec2 position, double angle, double growth,
                                bool frozen) {
@@ -114,8 +115,8 @@ void PackingSimulation::finalize(const Box& area) {
     fill_ += m.area;
     restFill_ += m.restArea * m.growth * m.growth;
   }
-  fill_ = (fill_ + parameters_.occupiedArea) / containerArea_;
-  restFill_ = (restFill_ + parameters_.occupiedArea) / containerArea_;
+  fill_ = (fill_ + domain_.occupiedArea) / containerArea_;
+  restFill_ = (restFill_ + domain_.occupiedArea) / containerArea_;
 }
 
 void PackingSimulation::prepareSkins(std::size_t meshBegin, std::size_t meshEnd) {
@@ -159,7 +160,7 @@ int PackingSimulation::nearestSkinPoints(Vec2 p, int excludeMesh, SkinHit* hits)
 Vec2 PackingSimulation::periodicOffset(int image) const {
   // Image 0 is the mesh itself; 1…8 the neighbouring cells in a fixed order (determinism).
   static constexpr int kCell[9][2] = {{0, 0}, {-1, -1}, {0, -1}, {1, -1}, {-1, 0}, {1, 0}, {-1, 1}, {0, 1}, {1, 1}};
-  return {kCell[image][0] * parameters_.period.x, kCell[image][1] * parameters_.period.y};
+  return {kCell[image][0] * domain_.period.x, kCell[image][1] * domain_.period.y};
 }
 
 void PackingSimulation::nearestSkinPointsOf(Vec2 p, Vec2 offset, int image, int excludeMesh, SkinHit* hits,
@@ -189,7 +190,7 @@ void PackingSimulation::nearestSkinPointsOf(Vec2 p, Vec2 offset, int image, int 
 }
 
 void PackingSimulation::wrapMeshes(std::size_t meshBegin, std::size_t meshEnd) {
-  const Vec2 period = parameters_.period;
+  const Vec2 period = domain_.period;
   for (std::size_t m = meshBegin; m < meshEnd; ++m) {
     const MeshInstance& mesh = meshes_[m];
     Vec2 centre;
@@ -377,8 +378,8 @@ void PackingSimulation::step() {
     total += mesh.area;
     rest += mesh.restArea * mesh.growth * mesh.growth;
   }
-  fill_ = (total + parameters_.occupiedArea) / containerArea_;
-  restFill_ = (rest + parameters_.occupiedArea) / containerArea_;
+  fill_ = (total + domain_.occupiedArea) / containerArea_;
+  restFill_ = (rest + domain_.occupiedArea) / containerArea_;
   ++iteration_;
 }
 

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "pak/repulsion/orientation.hpp"
+#include "pak/sim/simulation_parameters.hpp"
 #include "pak/sim/element_mesh.hpp"
 #include "sim/parallel.hpp"
 #include "sim/region_index.hpp"
@@ -13,20 +14,8 @@
 
 namespace pak {
 
-struct SimulationParameters {
-  double repulsionStrength = 80.0;
-  double overlapStrength = 80.0;
-  double boundaryStrength = 80.0;
-  double edgeStrength = 40.0;
-  double negativeSpaceStrength = 10.0;
-  double torsionStrength = 0.0;
-  double soft = 1.0;
-  double timeStep = 0.1;
-  double velocityCap = 0.5;
-  double damping = 0.0;     // fraction of velocity lost per step (0: none, as in the thesis)
-  double growthRate = 0.01;
-  double cellSize = 30.0;  // neighbour grid cell; also the repulsion cut-off distance
-  double outsideTolerance = 2.0;  // a vertex further outside the container blocks growth
+// What the simulation needs beyond the user's constants, from the packing it runs.
+struct PackingDomain {
   double occupiedArea = 0.0;  // container area taken by obstacles (fixed elements), counted in fill
   // Tile W × H (thesis 4.8): a periodic domain [0, W] × [0, H]; every mesh also acts through
   // its clones at offsets (k W, l H), k, l ∈ {-1, 0, 1}, and there are no walls. 0: off.
@@ -50,8 +39,9 @@ struct MeshInstance {
 
 class PackingSimulation {
  public:
+  // `parameters` as resolved by the packer: a positive cell size.
   PackingSimulation(const RegionIndex& container, double containerArea, const SimulationParameters& parameters,
-                    ThreadPool& pool);
+                    ThreadPool& pool, const PackingDomain& domain = {});
 
   // Places a copy of `mesh` scaled by `growth`, rotated by `angle` (radians) and centred at
   // `position`. Call `finalize` after the last one.
@@ -121,7 +111,7 @@ class PackingSimulation {
   int nearestSkinPoints(Vec2 p, int excludeMesh, SkinHit* hits) const;
   // Periodic domain (tile mode): the hits of p - offset, reported at the clone `image`.
   void nearestSkinPointsOf(Vec2 p, Vec2 offset, int image, int excludeMesh, SkinHit* hits, int& count) const;
-  bool periodic() const { return parameters_.period.x > 0.0 && parameters_.period.y > 0.0; }
+  bool periodic() const { return domain_.period.x > 0.0 && domain_.period.y > 0.0; }
   Vec2 periodicOffset(int image) const;
   // A mesh whose centre left the tile moves whole by ±W / ±H (never single vertices).
   void wrapMeshes(std::size_t meshBegin, std::size_t meshEnd);
@@ -129,6 +119,7 @@ class PackingSimulation {
   const RegionIndex& container_;
   double containerArea_;
   SimulationParameters parameters_;
+  PackingDomain domain_;
   ThreadPool& pool_;
   int iteration_ = 0;
   double fill_ = 0.0;

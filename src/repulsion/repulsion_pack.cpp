@@ -29,41 +29,50 @@ struct PreparedElement {
   std::string source;
 };
 
+// Each error names the option as `pak pack` spells it (the flag is also the --config key).
 void checkOptions(const RepulsionOptions& o) {
-  auto positive = [](double v, const char* name) {
-    if (!(v > 0.0) || !std::isfinite(v)) throw InputError("", std::string(name) + " must be a positive number");
+  auto positive = [](double v, const char* option) {
+    if (!(v > 0.0) || !std::isfinite(v)) throw InputError(option, "must be a positive number");
   };
-  positive(o.gap, "gap");
-  positive(o.elementArea, "element area");
-  positive(o.initialCoverage, "initial coverage");
-  positive(o.timeStep, "time step");
-  positive(o.velocityCap, "velocity cap");
-  positive(o.targetFill, "target fill");
-  if (!(o.outsideTolerance >= 0.0)) throw InputError("", "outside tolerance must not be negative");
-  if (!(o.damping >= 0.0 && o.damping < 1.0)) throw InputError("", "damping must be in [0, 1)");
-  if (o.meshSpacing < 0.0 || o.count < 0 || o.maxIterations < 0 || o.stallWindow < 1 || o.cellSize < 0.0)
-    throw InputError("", "mesh spacing, count, cell size, max iterations and stall window must not be negative");
-  if (!(o.dockingStrength >= 0.0) || !std::isfinite(o.dockingStrength))
-    throw InputError("", "docking strength must be a non-negative number");
-  if (o.tile != Vec2{} && !isTiled(o.tile)) throw InputError("", "tile size must be two positive numbers W,H");
-  if (o.shapeMatching && isTiled(o.tile)) throw InputError("", "shape matching needs container corners; a tile has none");
-  if (o.count > 100000) throw InputError("", "count " + std::to_string(o.count) + " is absurdly large");
-  if (!(o.secondaryScale > 0.0 && o.secondaryScale <= 10.0)) throw InputError("", "secondary scale must be in (0, 10]");
-  if (!(o.secondaryMinDistance >= 0.0) || !(o.secondarySeparation >= 0.0) || !std::isfinite(o.secondaryMinDistance) ||
-      !std::isfinite(o.secondarySeparation))
-    throw InputError("", "secondary minimum distance and separation must be non-negative numbers");
-  if (o.secondaryResolution < 16 || o.secondaryResolution > 8000)
-    throw InputError("", "secondary resolution must be between 16 and 8000 cells");
-  positive(o.secondaryTargetFill, "secondary target fill");
-  if (o.orientationField.axis != 'x' && o.orientationField.axis != 'y')
-    throw InputError("", "orientation field axis must be x or y");
-  if (!std::isfinite(o.orientationField.fromDegrees) || !std::isfinite(o.orientationField.toDegrees))
-    throw InputError("", "orientation field angles must be finite");
-  if (!(o.orientationTorsion >= 0.0) || !std::isfinite(o.orientationTorsion))
-    throw InputError("", "orientation torsion must be a non-negative number");
-  for (double k : {o.repulsionStrength, o.overlapStrength, o.boundaryStrength, o.edgeStrength,
-                   o.negativeSpaceStrength, o.torsionStrength, o.soft, o.growthRate, o.stallEpsilon})
-    if (!(k >= 0.0) || !std::isfinite(k)) throw InputError("", "force strengths and rates must be non-negative numbers");
+  auto nonNegative = [](double v, const char* option) {
+    if (!(v >= 0.0) || !std::isfinite(v)) throw InputError(option, "must be a non-negative number");
+  };
+  positive(o.gap, "--gap");
+  nonNegative(o.meshSpacing, "--mesh-spacing");
+  if (o.count < 0) throw InputError("--count", "must not be negative");
+  if (o.count > 100000) throw InputError("--count", std::to_string(o.count) + " is absurdly large");
+  positive(o.elementArea, "--element-area");
+  positive(o.initialCoverage, "--initial-coverage");
+  checkSimulationParameters(o.simulation);
+  positive(o.stop.targetFill, "--target-fill");
+  if (o.stop.stallWindow < 1) throw InputError("--stall-window", "must be at least 1");
+  nonNegative(o.stop.stallEpsilon, "--stall-epsilon");
+  if (o.stop.maxIterations < 0) throw InputError("--max-iterations", "must not be negative");
+  if (!(o.secondary.scale > 0.0 && o.secondary.scale <= 10.0)) throw InputError("--secondary-scale", "must be in (0, 10]");
+  nonNegative(o.secondary.minDistance, "--secondary-min-distance");
+  nonNegative(o.secondary.separation, "--secondary-separation");
+  if (o.secondary.resolution < 16 || o.secondary.resolution > 8000)
+    throw InputError("--secondary-resolution", "must be between 16 and 8000 cells");
+  positive(o.secondary.targetFill, "--secondary-target-fill");
+  nonNegative(o.shapeMatching.dockingStrength, "--docking-strength");
+  if (o.tiling.size != Vec2{} && !isTiled(o.tiling.size)) throw InputError("--tile", "must be two positive numbers W,H");
+  if (o.shapeMatching.enabled && isTiled(o.tiling.size))
+    throw InputError("--shape-matching", "needs container corners; a tile has none");
+  if (o.orientation.field.axis != 'x' && o.orientation.field.axis != 'y')
+    throw InputError("--orientation-field", "the axis must be x or y");
+  if (!std::isfinite(o.orientation.field.fromDegrees) || !std::isfinite(o.orientation.field.toDegrees))
+    throw InputError("--orientation-field", "the angles must be finite");
+  nonNegative(o.orientation.torsion, "--orientation-torsion");
+}
+
+// The simulation's constants as the run resolves them: a cell size of 0 asks for
+// 2 × mesh spacing, and a preferred orientation without --k-torsion pulls with its own k_tor.
+SimulationParameters resolvedParameters(const RepulsionOptions& options, double spacing) {
+  SimulationParameters parameters = options.simulation;
+  if (parameters.cellSize == 0.0) parameters.cellSize = 2.0 * spacing;
+  if (options.orientation.mode != OrientationMode::Random && parameters.torsionStrength == 0.0)
+    parameters.torsionStrength = options.orientation.torsion;
+  return parameters;
 }
 
 std::vector<Shape> transformedArt(const std::vector<Shape>& art, Vec2 centre, double scale) {
@@ -91,7 +100,7 @@ std::vector<PreparedElement> prepareLibrary(const Library& library, double nomin
     p.source = e.source;
     p.art = transformedArt(e.shapes, centre, scale);
     p.outline = transformed(e.outline, scale, -centre * scale);
-    meshOptions.seed = options.seed * 7919 + i;
+    meshOptions.seed = options.run.seed * 7919 + i;
     try {
       p.mesh = buildElementMesh(p.art, p.outline, meshOptions);
     } catch (const InputError& error) {
@@ -174,7 +183,7 @@ StopReason simulateUntilStopped(PackingSimulation& sim, const RepulsionOptions& 
                                 int iterationOffset, const RepulsionCallbacks& callbacks, const Snapshot& snapshot) {
   // Eq. 4.7 over a window of the last w + 1 area fractions. The fraction is the meshes' rest
   // area (see restFill): the measured skin area jitters by more than ε from step to step.
-  const int w = options.stallWindow;
+  const int w = options.stop.stallWindow;
   std::vector<double> history(static_cast<std::size_t>(w) + 1, 0.0);
   StopReason reason = StopReason::IterationCap;
   auto report = [&] {
@@ -187,10 +196,10 @@ StopReason simulateUntilStopped(PackingSimulation& sim, const RepulsionOptions& 
     }
     callbacks.onProgress(progress);
   };
-  while (sim.iteration() < options.maxIterations) {
+  while (sim.iteration() < options.stop.maxIterations) {
     sim.step();
     int it = sim.iteration();
-    history[static_cast<std::size_t>(it % (w + 1))] = options.stallOnMeasuredArea ? sim.fill() : sim.restFill();
+    history[static_cast<std::size_t>(it % (w + 1))] = options.stop.stallOnMeasuredArea ? sim.fill() : sim.restFill();
     const int total = iterationOffset + it;
     if (callbacks.onProgress && callbacks.progressEvery > 0 && total % callbacks.progressEvery == 0) report();
     if (callbacks.onSnapshot && callbacks.snapshotEvery > 0 && total % callbacks.snapshotEvery == 0)
@@ -203,7 +212,7 @@ StopReason simulateUntilStopped(PackingSimulation& sim, const RepulsionOptions& 
                    history[static_cast<std::size_t>((it - w + i - 1) % (w + 1))];
         sum += d * d;
       }
-      if (std::sqrt(sum / w) < options.stallEpsilon) { reason = StopReason::Stalled; break; }
+      if (std::sqrt(sum / w) < options.stop.stallEpsilon) { reason = StopReason::Stalled; break; }
     }
   }
   report();
@@ -248,15 +257,15 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Repulsio
 }
 
 Packing packRepulsion(const Scene& scene, const Library& library, const Library& secondaryLibrary,
-                      const RepulsionOptions& options, const RepulsionCallbacks& callbacks) {
+                      const RepulsionOptions& options, const RepulsionCallbacks& callbacks) try {
   const auto passStart = std::chrono::steady_clock::now();
   checkOptions(options);
   // Tile mode packs the rectangle [0, W] × [0, H] in place of the scene's container.
-  if (isTiled(options.tile) && !secondaryLibrary.empty())
-    throw InputError("", "secondary elements are not supported in tile mode yet");
-  if (isTiled(options.tile) && !isTileScene(scene, options.tile))
-    return packRepulsion(tileScene(options.tile), library, options, callbacks);
-  if (library.empty()) throw InputError("", "no elements to pack");
+  if (isTiled(options.tiling.size) && !secondaryLibrary.empty())
+    throw InputError("--secondary", "is not supported with --tile yet");
+  if (isTiled(options.tiling.size) && !isTileScene(scene, options.tiling.size))
+    return packRepulsion(tileScene(options.tiling.size), library, options, callbacks);
+  if (library.empty()) throw InputError("--elements", "no elements to pack");
   Box box = bounds(scene.container);
   double containerAreaInput = area(scene.container);
   if (box.empty() || !(containerAreaInput > 0.0)) throw InputError(scene.source, "container has no area");
@@ -313,19 +322,19 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Library&
     partIndex.push_back(parts.size() > 1 ? &partIndexes.back() : &containerIndex);
     partSeeding.push_back({&parts[c], partIndex[c], partCounts[c], containers.typesOf[c]});
   }
-  const Vec2 period = isTiled(options.tile) ? options.tile * frame.scale : Vec2{};
-  std::vector<Seed> seeds = seedContainers(partSeeding, options.seed, period);
+  const Vec2 period = isTiled(options.tiling.size) ? options.tiling.size * frame.scale : Vec2{};
+  std::vector<Seed> seeds = seedContainers(partSeeding, options.run.seed, period);
   if (seeds.empty()) throw InputError(scene.source, "container too small to seed any element");
   // Preferred orientation: seeded at the angle the torsion will hold (eq. 4.6).
-  const OrientationRamp ramp = options.orientation == OrientationMode::Field
-                                   ? OrientationRamp::over(options.orientationField, bounds(container).min, bounds(container).max)
+  const OrientationRamp ramp = options.orientation.mode == OrientationMode::Field
+                                   ? OrientationRamp::over(options.orientation.field, bounds(container).min, bounds(container).max)
                                    : OrientationRamp{};
-  if (options.orientation != OrientationMode::Random)
+  if (options.orientation.mode != OrientationMode::Random)
     for (Seed& s : seeds) s.angle = ramp.active ? ramp.angleAt(s.position) : 0.0;
   // Shape matching (4.7): elements that fit the salient corners take the nearest seeds.
   std::optional<CornerDocking> docking;
   const auto matchingStart = std::chrono::steady_clock::now();
-  if (options.shapeMatching) {
+  if (options.shapeMatching.enabled) {
     std::vector<const ElementMesh*> meshes;
     std::vector<const Region*> outlines;
     for (const PreparedElement& t : types) { meshes.push_back(&t.mesh); outlines.push_back(&t.outline); }
@@ -350,27 +359,11 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Library&
     if (docking) { docking->position(g0, containerIndex, seeds); reassignContainers(); }
   }
 
-  SimulationParameters parameters;
-  parameters.repulsionStrength = options.repulsionStrength;
-  parameters.overlapStrength = options.overlapStrength;
-  parameters.boundaryStrength = options.boundaryStrength;
-  parameters.edgeStrength = options.edgeStrength;
-  parameters.negativeSpaceStrength = options.negativeSpaceStrength;
-  parameters.torsionStrength = options.torsionStrength;
-  if (options.orientation != OrientationMode::Random && options.torsionStrength == 0.0)
-    parameters.torsionStrength = options.orientationTorsion;
-  parameters.soft = options.soft;
-  parameters.timeStep = options.timeStep;
-  parameters.velocityCap = options.velocityCap;
-  parameters.damping = options.damping;
-  parameters.growthRate = options.growthRate;
-  parameters.outsideTolerance = options.outsideTolerance;
-  parameters.cellSize = options.cellSize > 0.0 ? options.cellSize : 2.0 * spacing;
-  parameters.occupiedArea = blockedArea;
-  parameters.period = period;
+  const SimulationParameters parameters = resolvedParameters(options, spacing);
+  const PackingDomain domain{.occupiedArea = blockedArea, .period = period};
 
-  ThreadPool pool(options.threads);
-  PackingSimulation sim(containerIndex, containerArea + blockedArea, parameters, pool);
+  ThreadPool pool(options.run.threads);
+  PackingSimulation sim(containerIndex, containerArea + blockedArea, parameters, pool, domain);
   for (const Seed& s : seeds) sim.meshes()[sim.addMesh(types[s.type].mesh, s.type, s.position, s.angle, g0)].container = s.container;
   // Both passes see the same containers (one boundary each), reflex corners and orientation.
   auto setUpContainers = [&](PackingSimulation& simulation) {
@@ -389,18 +382,18 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Library&
     if (ramp.active) simulation.setOrientationField(ramp);
   };
   setUpContainers(sim);
-  if (docking) sim.setDocks(docking->docks(sim), options.dockingStrength);
+  if (docking) sim.setDocks(docking->docks(sim), options.shapeMatching.dockingStrength);
   Box area = bounds(container);
   Vec2 margin{0.1 * kCanonicalSide, 0.1 * kCanonicalSide};
   area.add(area.min - margin);
   area.add(area.max + margin);
   sim.finalize(area);
 
-  const StopReason reason = simulateUntilStopped(sim, options, options.targetFill, 0, callbacks, [&] {
+  const StopReason reason = simulateUntilStopped(sim, options, options.stop.targetFill, 0, callbacks, [&] {
     return collectPacking(sim, types, frame, scene.container);
   });
   Packing packing = collectPacking(sim, types, frame, scene.container);
-  if (!isTiled(options.tile) && !artIsClean(packing, fixedArt) && sim.projectInside() > 0)
+  if (!isTiled(options.tiling.size) && !artIsClean(packing, fixedArt) && sim.projectInside() > 0)
     packing = collectPacking(sim, types, frame, scene.container);
   packing.stopReason = reason;
   packing.containers = partsInput;
@@ -409,7 +402,7 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Library&
     packing.dockedElements = docking->dockedCount();
     packing.shapeMatchingSeconds = matchingSeconds;
   }
-  packing.tile = isTiled(options.tile) ? options.tile : Vec2{};
+  packing.tile = isTiled(options.tiling.size) ? options.tiling.size : Vec2{};
   packing.fixedArt = fixedArt;
   packing.passes.push_back({static_cast<int>(sim.meshes().size()), sim.iteration(), reason, secondsSince(passStart),
                             packing.skinFill, artFill(packing)});
@@ -418,12 +411,12 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Library&
   // Secondary elements (4.6): seeds in the pockets the primaries left, small elements shrunk
   // into them, the primaries frozen where they stopped (they repel but neither move nor grow).
   const auto secondaryStart = std::chrono::steady_clock::now();
-  const double secondaryArea = nominalSkinArea * options.secondaryScale * options.secondaryScale;
+  const double secondaryArea = nominalSkinArea * options.secondary.scale * options.secondary.scale;
   SecondarySeedingOptions secondarySeeding;
-  secondarySeeding.minDistance = options.secondaryMinDistance > 0.0 ? options.secondaryMinDistance
+  secondarySeeding.minDistance = options.secondary.minDistance > 0.0 ? options.secondary.minDistance
                                                                     : std::max(options.gap, 0.25 * std::sqrt(secondaryArea));
-  secondarySeeding.separation = options.secondarySeparation > 0.0 ? options.secondarySeparation : std::sqrt(secondaryArea);
-  secondarySeeding.resolution = options.secondaryResolution;
+  secondarySeeding.separation = options.secondary.separation > 0.0 ? options.secondary.separation : std::sqrt(secondaryArea);
+  secondarySeeding.resolution = options.secondary.resolution;
   const std::vector<SecondarySeed> pockets =
       secondarySeeds(subtract(container, skinsRegion(sim)), bounds(container), secondarySeeding);
   PackingPass secondPass{static_cast<int>(pockets.size()), 0, StopReason::IterationCap, 0.0, packing.skinFill,
@@ -437,7 +430,7 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Library&
       allTypes.push_back(std::move(e));
     const int secondaryTypes = static_cast<int>(allTypes.size()) - firstSecondary;
 
-    PackingSimulation second(containerIndex, containerArea + blockedArea, parameters, pool);
+    PackingSimulation second(containerIndex, containerArea + blockedArea, parameters, pool, domain);
     for (const MeshInstance& m : sim.meshes()) {
       const int id = second.addMesh(allTypes[m.type].mesh, m.type, {}, 0.0, m.growth, true);
       second.meshes()[id].container = m.container;
@@ -445,7 +438,7 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Library&
                 second.positions().begin() + second.meshes()[id].vertexBegin);
     }
     // Random types and angles; each shrunk so its skin fits the pocket's empty disc.
-    Rng rng(options.seed * 0x9E3779B97F4A7C15ull + 46);
+    Rng rng(options.run.seed * 0x9E3779B97F4A7C15ull + 46);
     for (const SecondarySeed& pocket : pockets) {
       const int type = firstSecondary + static_cast<int>(rng.below(static_cast<std::uint64_t>(secondaryTypes)));
       const double angle = rng.uniform(0.0, 2.0 * 3.14159265358979323846);
@@ -468,9 +461,9 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Library&
     // a few small elements change the fill far less per iteration than the primaries did, so
     // the unscaled ε would stop them before they grow (see docs/secondary-fixed-rigid.md).
     RepulsionOptions secondOptions = options;
-    secondOptions.stallEpsilon *= static_cast<double>(pockets.size()) * secondaryArea / containerArea;
+    secondOptions.stop.stallEpsilon *= static_cast<double>(pockets.size()) * secondaryArea / containerArea;
     secondPass.stopReason =
-        simulateUntilStopped(second, secondOptions, options.secondaryTargetFill, primaryIterations, callbacks, collect);
+        simulateUntilStopped(second, secondOptions, options.secondary.targetFill, primaryIterations, callbacks, collect);
     secondPass.iterations = second.iteration();
     Packing result = collect();
     if (!artIsClean(result, fixedArt) && second.projectInside() > 0) result = collect();
@@ -486,6 +479,8 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Library&
   secondPass.seconds = secondsSince(secondaryStart);
   packing.passes.push_back(secondPass);
   return packing;
+} catch (const InputError& error) {
+  throw attributed(error, scene.source);
 }
 
 }  // namespace pak

@@ -22,7 +22,7 @@ Box tileBox(Vec2 size) { return Box{{0.0, 0.0}, size}; }
 
 Scene tileScene(Vec2 size) {
   if (!(size.x > 0.0 && size.y > 0.0 && std::isfinite(size.x) && std::isfinite(size.y)))
-    throw InputError("", "tile size must be two positive numbers W,H");
+    throw InputError("--tile", "must be two positive numbers W,H");
   Scene scene;
   scene.source = "tile " + std::to_string(size.x) + " x " + std::to_string(size.y);
   scene.container = rectangle(tileBox(size));

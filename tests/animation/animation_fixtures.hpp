@@ -64,8 +64,8 @@ inline AnimationScript spinningStars(int count, int slices = 8) {
 
 inline AnimationOptions quickAnimationOptions() {
   AnimationOptions o;
-  o.maxIterations = 60;
-  o.threads = 1;
+  o.stop.maxIterations = 60;
+  o.run.threads = 1;
   return o;
 }
 

@@ -14,7 +14,7 @@ TEST(AnimationPack, SpinningStarsFillTheDiscWithoutOverlapsAtTheSlices) {
   const Scene scene = test::discScene();
   const AnimationScript script = test::spinningStars(8);
   AnimationOptions options = test::quickAnimationOptions();
-  options.maxIterations = 400;
+  options.stop.maxIterations = 400;
   const AnimatedPacking a = packAnimation(scene, {test::starElement("star.svg")}, script, options);
   ASSERT_EQ(a.elements.size(), 8u);
   EXPECT_GT(a.iterations, 50);
@@ -51,7 +51,7 @@ TEST(AnimationPack, FrameZeroIsTheFirstSliceAndLoopsClose) {
 
 TEST(AnimationPack, DeterministicWhateverTheThreadCount) {
   AnimationOptions one = test::quickAnimationOptions(), two = one;
-  two.threads = 2;
+  two.run.threads = 2;
   const AnimatedPacking a = packAnimation(test::discScene(), {test::starElement("s")}, test::spinningStars(6), one);
   const AnimatedPacking b = packAnimation(test::discScene(), {test::starElement("s")}, test::spinningStars(6), two);
   ASSERT_EQ(a.elements.size(), b.elements.size());

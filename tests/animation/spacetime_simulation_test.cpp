@@ -19,7 +19,7 @@ struct TwoTubes {
   static constexpr int kSlices = 6;
 
   explicit TwoTubes(int threads, double timeStrength = 4.0, bool crossLoop = true)
-      : pool(threads), sim(index, area(container), kSlices, parameters(timeStrength), pool) {
+      : pool(threads), sim(index, area(container), kSlices, parameters(), spacetime(timeStrength), pool) {
     ElementArt star = test::starElement("star");
     std::vector<Shape> art = star.shapes;
     for (Shape& s : art)
@@ -44,10 +44,14 @@ struct TwoTubes {
     }
     sim.finalize(Box{{0, 0}, {1000, 1000}});
   }
-  static SpacetimeParameters parameters(double timeStrength) {
+  static SimulationParameters parameters() {
+    SimulationParameters p = AnimationOptions{}.simulation;
+    p.growthRate = 0.05;
+    return p;
+  }
+  static SpacetimeParameters spacetime(double timeStrength) {
     SpacetimeParameters p;
     p.timeStrength = timeStrength;
-    p.growthRate = 0.05;
     return p;
   }
 };

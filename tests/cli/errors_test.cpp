@@ -114,6 +114,93 @@ TEST(CliErrors, EmptyPathFile) {
   expectInputError(folder.write("empty.path", ""));
 }
 
+// A command that fails before writing anything: exactly "pak: error: <start>…" on one stderr
+// line, exit code 2, and no C++ or library name (the parsers' own messages are reworded).
+void expectOneLineError(const std::string& arguments, const std::string& start) {
+  PakRun run = runPak(arguments);
+  SCOPED_TRACE("pak " + arguments + "\nstderr: " + run.err);
+  EXPECT_EQ(run.exitCode, 2);
+  EXPECT_TRUE(run.out.empty()) << run.out;
+  ASSERT_EQ(run.errLines().size(), 1u);
+  EXPECT_EQ(run.err.rfind("pak: error: " + start, 0), 0u);
+  for (const char* internal : {"json.exception", "std::", "stoi", "stod", "_M_", "CLI::", "Could not convert",
+                               "basic_string", "what()"})
+    EXPECT_EQ(run.err.find(internal), std::string::npos) << internal;
+}
+
+const std::string kPack = "pack -c examples/scene.svg -e examples/elements -q ";
+const std::string kFlow = "flow examples/flow/koi.svg -e examples/flow/elements -q ";
+const std::string kAnimate = "animate -c examples/animate/stars/disc.svg -a examples/animate/stars/stars.json -q ";
+
+// Out of range, unreadable, unknown or missing: each error names the option as typed.
+TEST(CliErrors, OptionErrorsNameTheOption) {
+  ScratchFolder out("errors-options");
+  const std::string o = "-o " + shellQuoted(out.file("out.svg")) + " ";
+  const std::pair<std::string, std::string> cases[] = {
+      {kPack + o + "--gap -1", "--gap: must be a positive number"},
+      {kPack + o + "--k-edge -5", "--k-edge: must be a non-negative number"},
+      {kPack + o + "--stall-window 0", "--stall-window: must be at least 1"},
+      {kPack + o + "--preset stiff", "--preset: unknown preset \"stiff\""},
+      {kPack + o + "--orientation sideways", "--orientation: 'sideways' is not one of"},
+      {kFlow + o + "--stop-ratio 2", "--stop-ratio: must be in (0, 1]"},
+      {kPack + o + "--count abc", "--count: cannot read 'abc' as an integer"},
+      {kPack + o + "--gap wide", "--gap: cannot read 'wide' as a number"},
+      {kPack + o + "--seed -1", "--seed: must be a non-negative integer"},
+      {kPack + o + "--seed 99999999999999999999999", "--seed: must be at most"},
+      {kPack + o + "--no-such-option 3", "--no-such-option: not an option of this command"},
+      {"pack -e examples/elements " + o, "--container: is required"},
+      {"pack -c examples/scene.svg " + o, "--elements: is required"},
+      {"", "expected a command: "},
+  };
+  for (const auto& [arguments, start] : cases) expectOneLineError(arguments, start);
+  EXPECT_TRUE(fs::is_empty(out.path()));
+}
+
+// pak animate checks the forces it shares with pak pack under pack's names, and takes its old
+// spellings, but not both at once.
+TEST(CliErrors, AnimateOptionsUnderPackNames) {
+  ScratchFolder out("errors-animate");
+  const std::string animate = kAnimate + "-o " + shellQuoted(out.file("anim"));
+  expectOneLineError(animate + " --cell-size 0", "--cell-size: must be a positive number");
+  expectOneLineError(animate + " --edge -1", "--k-edge: must be a non-negative number");
+  expectOneLineError(animate + " --edge 30 --k-edge 40", "--edge: the same option as --k-edge");
+  const std::string config = out.write("both.json", R"({"edge": 30, "k-edge": 40})");
+  expectOneLineError(animate + " --config " + shellQuoted(config),
+                     config + ": \"edge\" and \"k-edge\" are the same option");
+}
+
+TEST(CliErrors, BadConfigFilesNameTheFileAndLine) {
+  ScratchFolder folder("errors-config");
+  const std::string o = "-o " + shellQuoted(folder.file("out.svg")) + " --config ";
+  struct Case {
+    const char* name;
+    const char* contents;
+    const char* problem;  // after "FILE: "
+  };
+  const Case cases[] = {
+      {"broken.json", "{\n  \"gap\": 12,\n  \"count\" 4\n}\n", "not valid JSON at line 3, column "},
+      {"huge.json", R"({"gap": 1e999})", "not valid JSON: number overflow"},
+      {"empty.json", "", "not valid JSON at line 1"},
+      {"count.json", R"({"count": 99999999999})", "\"count\" is out of range"},
+      {"seed.json", R"({"seed": -2})", "\"seed\" must be a non-negative integer"},
+  };
+  for (const Case& c : cases) {
+    const std::string file = folder.write(c.name, c.contents);
+    expectOneLineError(kPack + o + shellQuoted(file), file + ": " + c.problem);
+  }
+  // A value the file gives is checked as if typed: the error names the option.
+  const std::string preset = folder.write("preset.json", R"({"preset": "stiff"})");
+  expectOneLineError(kPack + o + shellQuoted(preset), "--preset: unknown preset \"stiff\"");
+}
+
+TEST(CliErrors, BadAnimationFileNamesTheFileAndLine) {
+  ScratchFolder folder("errors-animation");
+  const std::string script = folder.write("broken.json", "{\"elements\": [\n  {\"svg\": }\n]}\n");
+  expectOneLineError("animate -c examples/animate/stars/disc.svg -q -o " + shellQuoted(folder.file("anim")) +
+                         " -a " + shellQuoted(script),
+                     script + ": not valid JSON at line 2, column ");
+}
+
 TEST(CliErrors, UnknownOptionIsAUsageError) {
   PakRun run = runPak("inspect --no-such-option examples/scene.svg");
   EXPECT_EQ(run.exitCode, 2);

@@ -133,3 +133,26 @@ TEST(CliPack, TileOptionErrors) {
     EXPECT_FALSE(std::filesystem::exists(dir.file("x.svg")));
   }
 }
+
+// What the readers skip in an element file is said by the packing commands too, not only by
+// `pak inspect`; --quiet silences it.
+TEST(CliPack, WarnsAboutSkippedShapesInElementFiles) {
+  ScratchFolder dir("cli-pack-warnings");
+  const std::string element = dir.write(
+      "labelled.svg", R"(<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 100 100">)"
+                      R"(<circle cx="50" cy="50" r="40" fill="#c33"/><text x="10" y="90">label</text></svg>)");
+  const std::string pack = "pack -c examples/scene.svg -e " + shellQuoted(element) +
+                           " --count 3 --max-iterations 5 --progress-every 1000 -o " + shellQuoted(dir.file("out.svg"));
+  PakRun run = runPak(pack);
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  EXPECT_EQ(count(run.err, "pak: warning: " + element), 1) << run.err;
+  EXPECT_NE(run.err.find("<text> is not supported"), std::string::npos) << run.err;
+  PakRun quiet = runPak(pack + " --quiet");
+  ASSERT_EQ(quiet.exitCode, 0) << quiet.err;
+  EXPECT_TRUE(quiet.err.empty()) << quiet.err;
+
+  PakRun flow = runPak("flow examples/flow/koi.svg -e examples/flow/elements " + shellQuoted(element) +
+                       " --iterations 0 -o " + shellQuoted(dir.file("flow.svg")));
+  ASSERT_EQ(flow.exitCode, 0) << flow.err;
+  EXPECT_EQ(count(flow.err, "pak: warning: " + element), 1) << flow.err;
+}

@@ -113,9 +113,9 @@ void check(const std::string& name, const Golden& actual) {
 RepulsionOptions shortRun() {
   RepulsionOptions o;
   o.count = 10;
-  o.maxIterations = 300;
-  o.seed = 5;
-  o.threads = 2;
+  o.stop.maxIterations = 300;
+  o.run.seed = 5;
+  o.run.threads = 2;
   return o;
 }
 
@@ -129,9 +129,9 @@ TEST(Golden, ExampleFish) {
 
 TEST(Golden, Tile) {
   RepulsionOptions options = shortRun();
-  options.tile = {1000.0, 1000.0};
+  options.tiling.size = {1000.0, 1000.0};
   const Library library = loadLibrary({kExamples + "/elements"});
-  check("tile", goldenOf(packRepulsion(tileScene(options.tile), library, options)));
+  check("tile", goldenOf(packRepulsion(tileScene(options.tiling.size), library, options)));
 }
 
 TEST(Golden, SecondaryPass) {
@@ -139,7 +139,7 @@ TEST(Golden, SecondaryPass) {
   const Library library = loadLibrary({kExamples + "/elements"});
   const Library secondary = loadLibrary({kExamples + "/elements/star.svg"});
   RepulsionOptions options = shortRun();
-  options.targetFill = 0.5;
+  options.stop.targetFill = 0.5;
   check("secondary-pass", goldenOf(packRepulsion(scene, library, secondary, options)));
 }
 
@@ -151,8 +151,8 @@ TEST(Golden, ShortSpacetimeRun) {
   for (const AnimatedElementSpec& spec : script.elements) library.push_back(loadLibrary({spec.svg}).front());
   AnimationOptions options;
   options.slices = 8;
-  options.maxIterations = 60;
-  options.seed = 2;
-  options.threads = 2;
+  options.stop.maxIterations = 60;
+  options.run.seed = 2;
+  options.run.threads = 2;
   check("spacetime", goldenOf(packAnimation(scene, library, script, options)));
 }

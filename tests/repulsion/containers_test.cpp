@@ -55,9 +55,9 @@ RepulsionOptions quick(int count) {
   RepulsionOptions o;
   o.gap = 14.0;
   o.count = count;
-  o.targetFill = 0.40;
-  o.maxIterations = 1500;
-  o.seed = 5;
+  o.stop.targetFill = 0.40;
+  o.stop.maxIterations = 1500;
+  o.run.seed = 5;
   return o;
 }
 
@@ -172,7 +172,7 @@ TEST(Containers, SingleContainerRunIsUnchangedByTheContainerList) {
   Scene& scene = input.scene;
   Library library = loadLibrary({kExamples + "/elements"});
   RepulsionOptions options = quick(6);
-  options.maxIterations = 200;
+  options.stop.maxIterations = 200;
   std::string with = toSvgString(packingDrawing(input.layout, packRepulsion(scene, library, options)));
   ASSERT_EQ(scene.containers.size(), 1u);
   scene.containers.clear();
@@ -192,12 +192,12 @@ TEST(Containers, SeveralContainersWithAFieldAreDeterministicWhateverTheThreadCou
   Scene& scene = input.scene;
   Library run = loadLibrary({kExamples + "/elements/cat.svg"});
   RepulsionOptions options = quick(9);
-  options.maxIterations = 150;
-  options.orientation = OrientationMode::Field;
-  options.orientationField = {'y', -30.0, 60.0};
+  options.stop.maxIterations = 150;
+  options.orientation.mode = OrientationMode::Field;
+  options.orientation.field = {'y', -30.0, 60.0};
   std::string reference;
   for (int threads : {1, 2, 3}) {
-    options.threads = threads;
+    options.run.threads = threads;
     std::string svg = toSvgString(packingDrawing(input.layout, packRepulsion(scene, run, options)));
     if (reference.empty()) reference = svg;
     EXPECT_EQ(svg, reference) << "threads = " << threads;

@@ -32,9 +32,9 @@ RepulsionOptions quickOptions() {
   RepulsionOptions o;
   o.gap = 16.0;
   o.count = 8;
-  o.targetFill = 0.45;
-  o.maxIterations = 3000;
-  o.seed = 2;
+  o.stop.targetFill = 0.45;
+  o.stop.maxIterations = 3000;
+  o.run.seed = 2;
   return o;
 }
 
@@ -91,7 +91,7 @@ TEST(FixedElements, SecondaryPassKeepsOffThemToo) {
   Library library = loadLibrary({kExamples + "/elements/cat.svg", kExamples + "/elements/fish.svg"});
   Library secondary = loadLibrary({kExamples + "/elements/star.svg"});
   RepulsionOptions options = quickOptions();
-  options.maxIterations = 600;
+  options.stop.maxIterations = 600;
   Packing packing = packRepulsion(scene, library, secondary, options);
   ASSERT_EQ(packing.passes.size(), 2u);
   EXPECT_GT(packing.passes[1].elements, 0);
@@ -108,7 +108,7 @@ TEST(FixedElements, FocalPathsOfPathFilesAreFixedElements) {
   ASSERT_EQ(scene.fixed.size(), 1u);
   RepulsionOptions options = quickOptions();
   options.count = 6;
-  options.maxIterations = 400;
+  options.stop.maxIterations = 400;
   Packing packing = packRepulsion(scene, loadLibrary({kExamples + "/elements/cat.svg"}), options);
   expectNoOverlapsWithFixed(packing);
   // The focal square (and its 1-unit stroke) is occupied: 201² of the 1000² container.
@@ -121,12 +121,15 @@ TEST(RigidPreset, KeepsShapesNearlyUndeformedAndOverlapFree) {
   RepulsionOptions soft = quickOptions();
   RepulsionOptions rigid = quickOptions();
   applyRepulsionPreset("rigid", rigid);
-  EXPECT_EQ(rigid.edgeStrength, 1000.0);
+  EXPECT_EQ(rigid.simulation.edgeStrength, 1000.0);
   EXPECT_EQ(rigid.gap, soft.gap);  // a preset sets strengths and the stepping only
   // Eq. 4.7 in simulated time: window × Δt and ε / Δt as the defaults'.
-  EXPECT_NEAR(rigid.stallWindow * rigid.timeStep, RepulsionOptions{}.stallWindow * RepulsionOptions{}.timeStep, 1e-9);
-  EXPECT_NEAR(rigid.stallEpsilon / rigid.timeStep, RepulsionOptions{}.stallEpsilon / RepulsionOptions{}.timeStep, 1e-12);
-  rigid.maxIterations = 3000;
+  const RepulsionOptions defaults;
+  EXPECT_NEAR(rigid.stop.stallWindow * rigid.simulation.timeStep,
+              defaults.stop.stallWindow * defaults.simulation.timeStep, 1e-9);
+  EXPECT_NEAR(rigid.stop.stallEpsilon / rigid.simulation.timeStep,
+              defaults.stop.stallEpsilon / defaults.simulation.timeStep, 1e-12);
+  rigid.stop.maxIterations = 3000;
   applyRepulsionPreset("soft", soft);
   auto maxStrain = [](const Packing& p) {
     double s = 0.0;

@@ -47,9 +47,9 @@ RepulsionOptions quick() {
   RepulsionOptions o;
   o.gap = 14.0;
   o.count = 8;
-  o.targetFill = 0.45;
-  o.maxIterations = 2500;
-  o.seed = 2;
+  o.stop.targetFill = 0.45;
+  o.stop.maxIterations = 2500;
+  o.run.seed = 2;
   return o;
 }
 
@@ -83,8 +83,8 @@ TEST(Orientation, ElementsFollowTheFieldAcrossTheBand) {
   Scene scene = loadScene(kExamples + "/band.svg").scene;
   Library library = loadLibrary({kExamples + "/elements/bird.svg"});
   RepulsionOptions options = quick();
-  options.orientation = OrientationMode::Field;
-  options.orientationField = {'x', 0.0, 180.0};
+  options.orientation.mode = OrientationMode::Field;
+  options.orientation.field = {'x', 0.0, 180.0};
   Packing packing = packRepulsion(scene, library, options);
   ASSERT_EQ(packing.elements.size(), 8u);
   Box box = bounds(scene.container);
@@ -105,13 +105,13 @@ TEST(Orientation, UprightHoldsTheDrawnAngleAndRandomDoesNot) {
   Scene scene = loadScene(kExamples + "/band.svg").scene;
   Library library = loadLibrary({kExamples + "/elements/bird.svg"});
   RepulsionOptions options = quick();
-  options.orientation = OrientationMode::Upright;
+  options.orientation.mode = OrientationMode::Upright;
   double worst = 0.0;
   for (const PlacedElement& e : packRepulsion(scene, library, options).elements)
     worst = std::max(worst, std::abs(wrapped(rotationOf(e, library[0]))));
   EXPECT_LT(worst * kDegrees, 8.0);
-  options.orientation = OrientationMode::Random;
-  options.maxIterations = 10;
+  options.orientation.mode = OrientationMode::Random;
+  options.stop.maxIterations = 10;
   worst = 0.0;
   for (const PlacedElement& e : packRepulsion(scene, library, options).elements)
     worst = std::max(worst, std::abs(wrapped(rotationOf(e, library[0]))));

@@ -1,4 +1,5 @@
 #include "repulsion/mesh_fixtures.hpp"
+#include "repulsion/thesis_parameters.hpp"
 #include "repulsion/packing_simulation.hpp"
 
 #include <gtest/gtest.h>
@@ -26,7 +27,7 @@ TEST(PackingSimulation, LoneMeshGrowsByRateTimesStep) {
   Region container = box(100);
   RegionIndex index(container, 5.0);
   ThreadPool pool(1);
-  SimulationParameters p;
+  SimulationParameters p = test::thesisParameters();
   p.cellSize = 20.0;
   PackingSimulation sim(index, 10000.0, p, pool);
   sim.addMesh(squareMesh(), 0, {50, 50}, 0.0, 0.5);
@@ -41,7 +42,7 @@ TEST(PackingSimulation, GrowthIsBlockedWhileOverlapping) {
   Region container = box(100);
   RegionIndex index(container, 5.0);
   ThreadPool pool(1);
-  SimulationParameters p;
+  SimulationParameters p = test::thesisParameters();
   p.cellSize = 20.0;
   PackingSimulation sim(index, 10000.0, p, pool);
   sim.addMesh(squareMesh(), 0, {50, 50}, 0.0, 1.0);
@@ -62,7 +63,7 @@ TEST(PackingSimulation, BoundaryForcePushesOutsideVertexIn) {
   Region container = box(100);
   RegionIndex index(container, 5.0);
   ThreadPool pool(1);
-  SimulationParameters p;
+  SimulationParameters p = test::thesisParameters();
   p.cellSize = 20.0;
   PackingSimulation sim(index, 10000.0, p, pool);
   sim.addMesh(squareMesh(), 0, {98, 50}, 0.0, 1.0);  // right edge at x = 103
@@ -79,7 +80,7 @@ TEST(PackingSimulation, RepulsionPushesNeighboursApart) {
   Region container = box(100);
   RegionIndex index(container, 5.0);
   ThreadPool pool(1);
-  SimulationParameters p;
+  SimulationParameters p = test::thesisParameters();
   p.cellSize = 20.0;
   p.growthRate = 0.0;
   PackingSimulation sim(index, 10000.0, p, pool);
@@ -97,7 +98,7 @@ TEST(PackingSimulation, FrozenMeshDoesNotMove) {
   Region container = box(100);
   RegionIndex index(container, 5.0);
   ThreadPool pool(1);
-  SimulationParameters p;
+  SimulationParameters p = test::thesisParameters();
   p.cellSize = 20.0;
   PackingSimulation sim(index, 10000.0, p, pool);
   sim.addMesh(squareMesh(), 0, {40, 50}, 0.0, 1.0, /*frozen=*/true);
@@ -129,7 +130,7 @@ TEST(PackingSimulation, ReflexCornerInsideAMeshPushesItOffAndBlocksGrowth) {
   Region l = {Polygon{{{0, 0}, {100, 0}, {100, 50}, {50, 50}, {50, 100}, {0, 100}}, {}}};
   RegionIndex index(l, 5.0);
   ThreadPool pool(1);
-  SimulationParameters p;
+  SimulationParameters p = test::thesisParameters();
   p.cellSize = 20.0;
   PackingSimulation sim(index, area(l), p, pool);
   ElementMesh diamond;
@@ -159,7 +160,7 @@ TEST(PackingSimulation, ProjectInsideMovesOnlyOutsideVerticesOfMovingMeshes) {
   Region container = box(100);
   RegionIndex index(container, 5.0);
   ThreadPool pool(1);
-  SimulationParameters p;
+  SimulationParameters p = test::thesisParameters();
   p.cellSize = 20.0;
   PackingSimulation sim(index, 10000.0, p, pool);
   sim.addMesh(squareMesh(), 0, {97, 50}, 0.0, 1.0);  // x 92..102: two corners 2 units outside

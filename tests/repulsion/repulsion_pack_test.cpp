@@ -33,9 +33,9 @@ RepulsionOptions quickOptions() {
   RepulsionOptions o;
   o.gap = 16.0;
   o.count = 10;
-  o.targetFill = 0.45;
-  o.maxIterations = 6000;
-  o.seed = 3;
+  o.stop.targetFill = 0.45;
+  o.stop.maxIterations = 6000;
+  o.run.seed = 3;
   return o;
 }
 
@@ -47,7 +47,7 @@ TEST(RepulsionPack, BundledExampleReachesTargetWithoutOverlaps) {
   RepulsionOptions options = quickOptions();
   Packing packing = packRepulsion(scene, library, options);
   EXPECT_EQ(packing.stopReason, StopReason::TargetFill);
-  EXPECT_GE(packing.skinFill, options.targetFill);
+  EXPECT_GE(packing.skinFill, options.stop.targetFill);
   EXPECT_EQ(packing.elements.size(), 10u);
   expectValidPacking(packing);
   for (const PlacedElement& e : packing.elements) EXPECT_GT(e.growth, 0.0);
@@ -58,15 +58,15 @@ TEST(RepulsionPack, SameSeedSameBytesWhateverTheThreadCount) {
   Scene& scene = input.scene;
   Library library = loadLibrary({kExamples + "/elements"});
   RepulsionOptions options = quickOptions();
-  options.maxIterations = 400;  // determinism shows early; keep it quick
+  options.stop.maxIterations = 400;  // determinism shows early; keep it quick
   std::string reference;
   for (int threads : {1, 2, 4}) {
-    options.threads = threads;
+    options.run.threads = threads;
     std::string svg = toSvgString(packingDrawing(input.layout, packRepulsion(scene, library, options)));
     if (reference.empty()) reference = svg;
     EXPECT_EQ(svg, reference) << "threads = " << threads;
   }
-  options.seed = 4;
+  options.run.seed = 4;
   EXPECT_NE(toSvgString(packingDrawing(input.layout, packRepulsion(scene, library, options))), reference);
 }
 

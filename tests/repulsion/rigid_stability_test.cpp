@@ -31,12 +31,7 @@ double strainAfter(const ElementMesh& mesh, const RepulsionOptions& o, int steps
   Region container{Polygon{Ring{{0, 0}, {1000, 0}, {1000, 1000}, {0, 1000}}, {}}};
   RegionIndex index(container, 10.0);
   ThreadPool pool(1);
-  SimulationParameters p;
-  p.edgeStrength = o.edgeStrength;
-  p.negativeSpaceStrength = o.negativeSpaceStrength;
-  p.timeStep = o.timeStep;
-  p.velocityCap = o.velocityCap;
-  p.damping = o.damping;
+  SimulationParameters p = o.simulation;
   p.growthRate = 0.0;
   p.cellSize = 24.0;
   PackingSimulation sim(index, 1e6, p, pool);
@@ -65,6 +60,6 @@ TEST(RigidPreset, StiffSpringsRelaxAtThePresetTimeStep) {
   EXPECT_LT(late, 0.5 * early);
   EXPECT_LT(late, 5e-4);
   RepulsionOptions tooLong = rigid;
-  tooLong.timeStep = 0.1;  // the default step with rigid springs: unstable, held by the cap
+  tooLong.simulation.timeStep = 0.1;  // the default step with rigid springs: unstable, held by the cap
   EXPECT_GT(strainAfter(mesh, tooLong, 1000), 20.0 * late);
 }

@@ -50,9 +50,9 @@ RepulsionOptions quickOptions() {
   RepulsionOptions o;
   o.gap = 16.0;
   o.count = 8;
-  o.targetFill = 0.45;
-  o.maxIterations = 3000;
-  o.seed = 5;
+  o.stop.targetFill = 0.45;
+  o.stop.maxIterations = 3000;
+  o.run.seed = 5;
   return o;
 }
 
@@ -93,7 +93,7 @@ TEST(SecondaryPass, FillsPocketsWithoutMovingPrimariesOrOverlapping) {
                                  kExamples + "/elements/bird.svg"});
   Library secondary = loadLibrary({kExamples + "/elements/star.svg", kExamples + "/elements/moon.svg"});
   RepulsionOptions options = quickOptions();
-  options.maxIterations = 450;  // per pass
+  options.stop.maxIterations = 450;  // per pass
   Packing primaryOnly = packRepulsion(scene, library, options);
   Packing packing = packRepulsion(scene, library, secondary, options);
 
@@ -148,8 +148,8 @@ TEST(SecondaryPass, NoPocketDeepEnoughMeansNoSecondaries) {
   Library library = loadLibrary({kExamples + "/elements/cat.svg"});
   Library secondary = loadLibrary({kExamples + "/elements/star.svg"});
   RepulsionOptions options = quickOptions();
-  options.maxIterations = 300;
-  options.secondaryMinDistance = 2000.0;  // farther than anything in a 1000-wide frame
+  options.stop.maxIterations = 300;
+  options.secondary.minDistance = 2000.0;  // farther than anything in a 1000-wide frame
   Packing packing = packRepulsion(scene, library, secondary, options);
   ASSERT_EQ(packing.passes.size(), 2u);
   EXPECT_EQ(packing.passes[1].elements, 0);
@@ -164,10 +164,10 @@ TEST(SecondaryPass, SameSeedSameBytesWhateverTheThreadCount) {
   Library secondary = loadLibrary({kExamples + "/elements/star.svg", kExamples + "/elements/moon.svg"});
   RepulsionOptions options = quickOptions();
   options.count = 5;
-  options.maxIterations = 150;  // per pass
+  options.stop.maxIterations = 150;  // per pass
   std::string reference;
   for (int threads : {1, 2}) {
-    options.threads = threads;
+    options.run.threads = threads;
     Packing packing = packRepulsion(scene, library, secondary, options);
     ASSERT_GT(packing.passes.back().elements, 0);
     std::string svg = toSvgString(packingDrawing(input.layout, packing));

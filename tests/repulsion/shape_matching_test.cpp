@@ -178,10 +178,10 @@ RepulsionOptions starOptions() {
   RepulsionOptions options;
   options.count = 10;
   options.gap = 12.0;
-  options.targetFill = 0.5;
-  options.maxIterations = 1500;
-  options.seed = 2;
-  options.shapeMatching = true;
+  options.stop.targetFill = 0.5;
+  options.stop.maxIterations = 1500;
+  options.run.seed = 2;
+  options.shapeMatching.enabled = true;
   return options;
 }
 
@@ -189,10 +189,10 @@ RepulsionOptions starOptions() {
 
 TEST(ShapeMatching, DockedRunIsTheSameWhateverTheThreadCount) {
   RepulsionOptions options = starOptions();
-  options.maxIterations = 300;
-  options.threads = 1;
+  options.stop.maxIterations = 300;
+  options.run.threads = 1;
   std::string one = toSvgString(packingDrawing(SceneLayout{}, packRepulsion(starScene(), triangleAndDisc(), options)));
-  options.threads = 3;
+  options.run.threads = 3;
   std::string three = toSvgString(packingDrawing(SceneLayout{}, packRepulsion(starScene(), triangleAndDisc(), options)));
   EXPECT_EQ(one, three);
 }

@@ -14,6 +14,7 @@
 #include "pak/io/tile_drawing.hpp"
 #include "pak/repulsion/repulsion.hpp"
 #include "repulsion/mesh_fixtures.hpp"
+#include "repulsion/thesis_parameters.hpp"
 #include "repulsion/packing_simulation.hpp"
 
 using namespace pak;
@@ -43,7 +44,7 @@ struct SeamScene {
   ThreadPool pool{1};
   PackingSimulation sim;
   SeamScene(bool periodic, double gapAcrossSeam, double dy = 0.0)
-      : sim(index, 4000.0, parameters(periodic), pool) {
+      : sim(index, 4000.0, parameters(), pool, domain(periodic)) {
     sim.addMesh(squareMesh(), 0, {95.0 - gapAcrossSeam / 2, 20}, 0.0, 1.0);
     sim.addMesh(squareMesh(), 0, {5.0 + gapAcrossSeam / 2, 20 + dy}, 0.0, 1.0);
     Box area;
@@ -51,23 +52,27 @@ struct SeamScene {
     area.add(Vec2{120, 60});
     sim.finalize(area);
   }
-  static SimulationParameters parameters(bool periodic) {
-    SimulationParameters p;
+  static SimulationParameters parameters() {
+    SimulationParameters p = test::thesisParameters();
     p.cellSize = 20.0;
     p.growthRate = 0.0;
-    if (periodic) p.period = {100, 40};
     return p;
+  }
+  static PackingDomain domain(bool periodic) {
+    PackingDomain d;
+    if (periodic) d.period = {100, 40};
+    return d;
   }
 };
 
 RepulsionOptions tileOptions() {
   RepulsionOptions o;
-  o.tile = {400, 300};
+  o.tiling.size = {400, 300};
   o.gap = 16.0;
   o.count = 8;
-  o.targetFill = 0.55;
-  o.maxIterations = 5000;
-  o.seed = 2;
+  o.stop.targetFill = 0.55;
+  o.stop.maxIterations = 5000;
+  o.run.seed = 2;
   return o;
 }
 
@@ -141,9 +146,9 @@ TEST(Tiling, TwoByTwoRepetitionOfATileIsOverlapFree) {
   RepulsionOptions options = tileOptions();
   Packing packing = packRepulsion(Scene{}, library, options);  // the scene is ignored in tile mode
   ASSERT_EQ(packing.elements.size(), 8u);
-  EXPECT_EQ(packing.tile, options.tile);
+  EXPECT_EQ(packing.tile, options.tiling.size);
   EXPECT_EQ(packing.stopReason, StopReason::TargetFill);
-  EXPECT_GE(packing.skinFill, options.targetFill);
+  EXPECT_GE(packing.skinFill, options.stop.targetFill);
   EXPECT_NEAR(area(packing.container), 400.0 * 300.0, 1e-6);
 
   std::vector<Region> outlines = artOutlines(packing);
@@ -182,12 +187,12 @@ TEST(Tiling, TwoByTwoRepetitionOfATileIsOverlapFree) {
 TEST(Tiling, SameSeedSameTileWhateverTheThreadCount) {
   Library library = loadLibrary({kExamples + "/elements"});
   RepulsionOptions options = tileOptions();
-  options.maxIterations = 300;
+  options.stop.maxIterations = 300;
   std::string reference;
   for (int threads : {1, 2, 4}) {
-    options.threads = threads;
+    options.run.threads = threads;
     Packing packing = packRepulsion(Scene{}, library, options);
-    std::string svg = toSvgString(packingDrawing(tileLayout(options.tile), packing));
+    std::string svg = toSvgString(packingDrawing(tileLayout(options.tiling.size), packing));
     if (reference.empty()) reference = svg;
     EXPECT_EQ(svg, reference) << "threads = " << threads;
   }
@@ -196,9 +201,9 @@ TEST(Tiling, SameSeedSameTileWhateverTheThreadCount) {
 TEST(Tiling, TileDrawingClipsElementsAndDrawsTheirClones) {
   Library library = loadLibrary({kExamples + "/elements"});
   RepulsionOptions options = tileOptions();
-  options.maxIterations = 1500;
+  options.stop.maxIterations = 1500;
   Packing packing = packRepulsion(Scene{}, library, options);
-  Drawing drawing = packingDrawing(tileLayout(options.tile), packing);
+  Drawing drawing = packingDrawing(tileLayout(options.tiling.size), packing);
   const DrawingGroup* elements = nullptr;
   for (const DrawingGroup& g : drawing.groups)
     if (g.id == "elements") elements = &g;
@@ -219,7 +224,7 @@ TEST(Tiling, TileDrawingClipsElementsAndDrawsTheirClones) {
             std::string::npos);
   EXPECT_NE(svg.find("clip-path=\"url(#pak-clip-1)\""), std::string::npos);
   // The 3 × 3 preview: 9 copies, each clipped to its own cell.
-  Drawing preview = tileRepetition(drawing, options.tile, 3, 3);
+  Drawing preview = tileRepetition(drawing, options.tiling.size, 3, 3);
   EXPECT_EQ(preview.viewBox.max, (Vec2{1200, 900}));
   int clipped = 0;
   for (const DrawingGroup& g : preview.groups) clipped += g.clip ? 1 : 0;
@@ -229,7 +234,7 @@ TEST(Tiling, TileDrawingClipsElementsAndDrawsTheirClones) {
 TEST(Tiling, RejectsBadTileSizes) {
   Library library = loadLibrary({kExamples + "/elements"});
   RepulsionOptions options = tileOptions();
-  options.tile = {-400, 300};
+  options.tiling.size = {-400, 300};
   EXPECT_THROW(packRepulsion(Scene{}, library, options), InputError);
   EXPECT_THROW(tileScene({400, std::nan("")}), InputError);
   EXPECT_THROW(tileScene({0, 300}), InputError);

@@ -11,36 +11,14 @@
 #include <string>
 #include <vector>
 
+#include "pak/animation/animation_options.hpp"
 #include "pak/animation/animation_script.hpp"
-#include "pak/animation/spacetime_parameters.hpp"
 #include "pak/geom/scene.hpp"
 #include "pak/geom/vec3.hpp"
 #include "pak/sim/element_mesh.hpp"
 #include "pak/sim/packing.hpp"
 
 namespace pak {
-
-struct AnimationOptions {
-  int slices = 0;                 // n_s; 0: the script's
-  // Nominal skin area of one element (growth 1) as a fraction of the container's area;
-  // 0: 1 / (number of elements), the size at which they would exactly fill it.
-  double elementArea = 0.0;
-  double gap = 0.08;              // d_gap as a fraction of the nominal element size (thesis 0.08)
-  double meshSpacing = 0.0;       // slice mesh spacing, canonical units; 0: nominal size / 4
-  double initialScale = 0.1;      // elements start shrunk to this (thesis 5–10 %), or less to fit
-  SpacetimeParameters simulation; // forces, integration, growth, grid (canonical units)
-  double torsionStrength = 10.0;  // k_tor of elements with a preferred orientation
-  // Stop when every slice is within this distance of another element or the wall (5.5.3,
-  // thesis 0.006 of the container), when every slice reached the growth cap, or at the cap.
-  double closeness = 6.0;
-  // ... or when the slices' mean growth rose by less than stallGrowth over the last
-  // stallWindow iterations (a slice grows by growthRate × Δt = 0.001 per free iteration).
-  double stallGrowth = 0.005;
-  int stallWindow = 100;
-  int maxIterations = 3000;
-  std::uint64_t seed = 1;
-  int threads = 0;                // 0: all cores; results do not depend on it
-};
 
 // Everything a checkpoint holds; the rest is rebuilt from the same inputs.
 struct AnimationState {

@@ -47,6 +47,7 @@ struct AnimatedElementSpec {
 };
 
 struct AnimationScript {
+  std::string source;       // the file it was read from, for error messages
   std::vector<AnimatedElementSpec> elements;
   bool loop = true;         // t = 1 joins t = 0 (thesis 5.5.2, constraint 3)
   int slices = 100;         // n_s

@@ -23,9 +23,9 @@ struct OrientationField {
   double toDegrees = 180.0;
 };
 
-// "x:0:180" or "y:-45:45" → the field; throws InputError otherwise.
+// "x:0:180" or "y:-45:45" → the field; throws InputError (--orientation-field) otherwise.
 OrientationField parseOrientationField(const std::string& text);
-// "upright", "random" or "field" → the mode; throws InputError otherwise.
+// "upright", "random" or "field" → the mode; throws InputError (--orientation) otherwise.
 OrientationMode parseOrientationMode(const std::string& text);
 const char* toString(OrientationMode mode);
 

@@ -5,20 +5,22 @@
 #include <string>
 #include <vector>
 
-#include "pak/repulsion/repulsion.hpp"
+#include "pak/repulsion/repulsion_options.hpp"
 
 namespace pak {
 
 struct RepulsionPreset {
   std::string name;
   std::string description;  // one line for --help
+  SimulationParameters simulation;
+  RepulsionStopRule stop;
 };
 
 // default, soft, rigid — in that order.
 const std::vector<RepulsionPreset>& repulsionPresets();
 
-// Sets the strengths of preset `name` on `options` (for stiff springs also the time step, with
-// the stopping rule kept the same in simulated time), leaving every other option as it is. Throws InputError for an unknown name.
+// Sets options.simulation and options.stop to those of preset `name`, leaving every other
+// option as it is. Throws InputError for an unknown name.
 void applyRepulsionPreset(const std::string& name, RepulsionOptions& options);
 
 }  // namespace pak

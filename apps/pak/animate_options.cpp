@@ -1,0 +1,39 @@
+// `pak animate`'s options, each declared once: flag, --config key, report parameter.
+#include "animate_arguments.hpp"
+#include "shared_options.hpp"
+
+namespace pak::cli {
+namespace {
+
+// AnimationOptions's members, by their path in the struct; the forces and the run's options
+// are the shared tables.
+OptionTable<AnimationOptions> animationOptionTable() {
+  using O = AnimationOptions;
+  const OptionTable<O> own{
+      {"slices", field(&O::slices), "n_s, slices along t (0: the animation file's, default 100)"},
+      {"time-length", field(&O::spacetime, &SpacetimeParameters::timeLength), "length of the t axis in canonical units (x and y span 1000)"},
+      {"element-area", field(&O::elementArea), "an element's nominal skin area as a fraction of the container (0: 1 / element count)"},
+      {"gap", field(&O::gap), "d_gap as a fraction of the nominal element size (thesis 0.08)"},
+      {"mesh-spacing", field(&O::meshSpacing), "slice mesh spacing, canonical units (0: nominal element size / 4)"},
+      {"initial-scale", field(&O::initialScale), "elements start shrunk to this fraction of their size (thesis 0.05–0.1)"},
+      {"time-springs", field(&O::spacetime, &SpacetimeParameters::timeStrength), "time springs between consecutive slices: higher is smoother, lower packs tighter (thesis Fig. 5.21)"},
+      {"target", field(&O::spacetime, &SpacetimeParameters::targetStrength), "pull of a guided element toward its targets"},
+      {"temporal", field(&O::spacetime, &SpacetimeParameters::temporalStrength), "k_tmp of eq. 5.2, keeps slices at their time"},
+      {"max-growth", field(&O::spacetime, &SpacetimeParameters::maxGrowth), "growth cap (1: the nominal size)"},
+      {"growth-spread", field(&O::spacetime, &SpacetimeParameters::growthSpread), "a slice grows only while within this of its neighbouring slices' growth, so sizes do not pulse (0: independent slices, as in the thesis)"},
+      {"closeness", field(&O::stop, &AnimationStopRule::closeness), "stop when every slice is this close to a neighbour or the wall (canonical units; thesis 0.006 of the container)"},
+      {"stall-growth", field(&O::stop, &AnimationStopRule::stallGrowth), "stop when the slices' mean growth rose less than this over --stall-window iterations"},
+      {"stall-window", field(&O::stop, &AnimationStopRule::stallWindow), "iterations over which --stall-growth is measured"},
+      {"max-iterations", field(&O::stop, &AnimationStopRule::maxIterations), "stop after this many simulation steps"},
+  };
+  return own + mounted(simulationOptions(), field(&O::simulation)) + mounted(runOptions(), field(&O::run));
+}
+
+}  // namespace
+
+const OptionTable<AnimateArguments>& animateOptions() {
+  static const OptionTable<AnimateArguments> table = mounted(animationOptionTable(), field(&AnimateArguments::options));
+  return table;
+}
+
+}  // namespace pak::cli

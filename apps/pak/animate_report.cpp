@@ -1,0 +1,59 @@
+#include "animate_report.hpp"
+
+#include <algorithm>
+
+#include "art_check.hpp"
+#include "report_fields.hpp"
+
+namespace pak::cli {
+
+FrameAudit auditFrames(const std::vector<Packing>& frames, const Region& container) {
+  const double containerArea = area(container);
+  const double frameCount = static_cast<double>(frames.size());
+  FrameAudit audit;
+  for (const Packing& frame : frames) {
+    const std::vector<Region> outlines = artOutlines(frame);
+    for (const Region& r : outlines) audit.meanFill += area(r) / containerArea / frameCount;
+    const PackingCheck check = checkArt(outlines, container);
+    audit.framesWithOverlap += check.overlappingPairs > 0 ? 1 : 0;
+    audit.framesOutside += check.elementsOutside > 0 ? 1 : 0;
+    audit.worstPairs = std::max(audit.worstPairs, check.overlappingPairs);
+    audit.worstOverlapArea = std::max(audit.worstOverlapArea, check.overlapArea / containerArea);
+  }
+  return audit;
+}
+
+nlohmann::json animateReport(const AnimateArguments& args, const AnimatedPacking& animation, int frameCount,
+                             const FrameAudit& audit, const AnimateTimes& times) {
+  nlohmann::json parameters;
+  animateOptions().report(parameters, args);
+  parameters["frames"] = frameCount;
+  nlohmann::json report =
+      reportWithParameters(parameters, "distances in canonical units: the container's bounding square is 1000 wide; t spans time-length");
+  report["container"] = args.container;
+  report["animation"] = args.animation;
+  report["elements"] = animation.elements.size();
+  report["vertices"] = animation.vertices;
+  report["springs"] = animation.springs;
+  report["envelope-triangles"] = animation.envelopeTriangles;
+  report["slices"] = animation.slices;
+  report["iterations"] = animation.iterations;
+  report["stop-reason"] = toString(animation.stopReason);
+  report["threads-used"] = animation.threads;
+  report["skin-fill-mean-over-slices"] = animation.fill;
+  report["art-fill-mean-over-frames"] = audit.meanFill;
+  report["overlapping-slices-at-end"] = animation.overlappingSlices;
+  report["frames-with-overlaps"] = audit.framesWithOverlap;
+  report["frames-with-element-outside"] = audit.framesOutside;
+  report["most-overlapping-pairs-in-a-frame"] = audit.worstPairs;
+  report["largest-overlap-area-fraction"] = audit.worstOverlapArea;
+  report["seconds"] = {{"setup", animation.setupSeconds},
+                       {"simulation", animation.seconds - animation.setupSeconds},
+                       {"rendering", times.rendering},
+                       {"wall", times.wall}};
+  report["seconds-per-iteration"] =
+      animation.iterations > 0 ? (animation.seconds - animation.setupSeconds) / animation.iterations : 0.0;
+  return report;
+}
+
+}  // namespace pak::cli

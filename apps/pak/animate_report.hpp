@@ -1,0 +1,27 @@
+#pragma once
+// What `pak animate` measures on its rendered frames, and the JSON report (--report) of a run.
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "animate_arguments.hpp"
+
+namespace pak::cli {
+
+// Overlaps between rendered frames (thesis 5.6 warns of brief ones between slices): measured
+// on every frame, reported, never hidden.
+struct FrameAudit {
+  int framesWithOverlap = 0, framesOutside = 0, worstPairs = 0;
+  double worstOverlapArea = 0.0;  // fraction of the container
+  double meanFill = 0.0;          // art fill, mean over frames
+};
+FrameAudit auditFrames(const std::vector<Packing>& frames, const Region& container);
+
+struct AnimateTimes {
+  double simulation = 0.0, rendering = 0.0, wall = 0.0;  // seconds
+};
+
+nlohmann::json animateReport(const AnimateArguments& args, const AnimatedPacking& animation, int frameCount,
+                             const FrameAudit& audit, const AnimateTimes& times);
+
+}  // namespace pak::cli

@@ -1,0 +1,52 @@
+// `pak flow`'s options, each declared once: flag, --config key, report parameter.
+#include "flow_arguments.hpp"
+#include "shared_options.hpp"
+
+namespace pak::cli {
+namespace {
+
+// FlowOptions's members.
+OptionTable<FlowOptions> flowOptionTable() {
+  using O = FlowOptions;
+  return {
+      {"gap", field(&O::gap), "s_gap, the distance between neighbouring streamlines, about an element's width (canonical units: l_canvas, the larger side of the containers' bounds, is 1000)"},
+      {"min-length", field(&O::minLength), "s_min: shorter streamlines get no element (canonical units)"},
+      {"max-length", field(&O::maxLength), "s_max: streamlines stop before this length (canonical units)"},
+      {"stop-ratio", field(&O::stopRatio), "s_stop = ratio × s_gap: a streamline stops this close to another"},
+      {"sample-spacing", field(&O::sampleSpacing), "sampling of guides, boundaries and streamlines (canonical units; thesis 0.005 l_canvas)"},
+      {"field-resolution", field(&O::fieldResolution), "vector field grid cells along the longer side"},
+      {"blob-resolution", field(&O::blobResolution), "blob (Voronoi) grid cells along the longer side"},
+      {"lr-samples", field(&O::lrSamples), "n_f, samples of the LR functions"},
+      {"spacing", field(&O::spacing), "space kept between elements, and between elements and walls (canonical units)"},
+      {"iterations", field(&O::iterations), "refinement iterations (Algorithm 2)"},
+      {"growth-tolerance", field(&O::growthTolerance), "α: a refined placement is kept when its area is at least α × the old one"},
+      {"growth-limit", field(&O::growthLimit), "g_limit: how far a streamline end or a blob moves per iteration (canonical units)"},
+      {"max-rotation", field(&O::maxRotationDegrees), "refinement tries rotations of ±1…N degrees"},
+      {"shift-distance-weight", field(&O::shiftDistanceWeight), "w_d of eq. 3.2: keeps a shifted streamline near the old one"},
+      {"shift-field-weight", field(&O::shiftFieldWeight), "w_f of eq. 3.2: keeps a shifted streamline along the field"},
+      {"shift-field-power", field(&O::shiftFieldPower), "p of eq. 3.2"},
+      {"shift-neighbours", field(&O::shiftNeighbours), "nearest nodes examined from each node when shifting a streamline"},
+      {"fill-gaps", field(&O::fillGaps), "add shapes made from the negative space between the elements (thesis Fig. 3.15)"},
+      {"fill-gaps-inset", field(&O::fillGapsInset), "with --fill-gaps: the gap shapes' inset from the elements (canonical units; 0: spacing / 2)"},
+      seedOption(field(&O::seed)),
+  };
+}
+
+// What the run reads itself (--smooth) or parses into FlowOptions (--mirror).
+OptionTable<FlowArguments> textOptionTable() {
+  using A = FlowArguments;
+  return {
+      {"mirror", field(&A::mirror), "x=VALUE: pack the part of the scene left of the vertical line x = VALUE (input units) and reflect it (thesis Fig. 3.13)"},
+      {"smooth", field(&A::smooth), "write outlines as cubic Béziers fitted within 0.4 canonical units instead of polygons (thesis 3.4's post-process): smaller files, easier to edit"},
+  };
+}
+
+}  // namespace
+
+const OptionTable<FlowArguments>& flowOptions() {
+  using A = FlowArguments;
+  static const OptionTable<A> table = mounted(flowOptionTable(), field(&A::options)) + textOptionTable();
+  return table;
+}
+
+}  // namespace pak::cli

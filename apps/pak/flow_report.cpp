@@ -1,0 +1,43 @@
+#include "flow_report.hpp"
+
+#include "art_check.hpp"
+#include "report_fields.hpp"
+
+namespace pak::cli {
+
+PackingCheck auditFlowPacking(const FlowPacking& packing) {
+  std::vector<Region> outlines;
+  for (const auto* list : {&packing.elements, &packing.gapElements})
+    for (const FlowElement& e : *list) outlines.push_back(e.outline);
+  if (!packing.fixedArt.empty()) outlines.push_back(packing.fixedArt);
+  return checkArt(outlines, packing.container);
+}
+
+nlohmann::json flowReport(const FlowArguments& args, const FlowPacking& packing, const PackingCheck& check,
+                          double wallSeconds) {
+  nlohmann::json parameters;
+  flowOptions().report(parameters, args);
+  nlohmann::json report =
+      reportWithParameters(parameters, "distances in canonical units: l_canvas (the larger side of the containers' and fixed elements' bounds) is 1000");
+  report["scene"] = args.scene;
+  report["elements-library"] = args.elements;
+  report["element-count"] = packing.elements.size();
+  report["gap-element-count"] = packing.gapElements.size();
+  report["streamline-count"] = packing.streamlines.size();
+  report["iterations"] = packing.iterations;
+  report["placements-tried"] = packing.placementsTried;
+  report["placements-accepted"] = packing.placementsAccepted;
+  report["fill-ratio-art"] = flowFill(packing);
+  report["fill-ratio-includes"] = "placed elements (and gap shapes) over the free space (containers minus fixed elements)";
+  report["element-area-per-iteration"] = packing.areaPerIteration;
+  report["seconds"] = {{"field", packing.seconds.field},           {"streamlines", packing.seconds.streamlines},
+                       {"blobs", packing.seconds.blobs},           {"placement", packing.seconds.placement},
+                       {"refinement", packing.seconds.refinement}, {"extras", packing.seconds.extras},
+                       {"wall", wallSeconds}};
+  reportCheck(report, check);
+  report["canonical-scale"] = packing.canonicalScale;
+  reportElementsPerContainer(report, packing.elements, packing.containers.size());
+  return report;
+}
+
+}  // namespace pak::cli

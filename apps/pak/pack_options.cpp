@@ -1,0 +1,67 @@
+// `pak pack`'s options, each declared once: flag, --config key, report parameter.
+#include "pack_arguments.hpp"
+#include "pak/repulsion/repulsion_presets.hpp"
+#include "shared_options.hpp"
+
+namespace pak::cli {
+namespace {
+
+// RepulsionOptions's members, by their path in the struct.
+OptionTable<RepulsionOptions> repulsionOptionTable() {
+  using O = RepulsionOptions;
+  using S = RepulsionStopRule;
+  using P = SecondaryPassOptions;
+  const OptionTable<O> elements{
+      {"gap", field(&O::gap), "d_gap, the spacing between elements (canonical units: the container's bounding square is 1000 wide)"},
+      {"mesh-spacing", field(&O::meshSpacing), "distance between mesh samples, canonical units (0: max(gap, element size / 10))"},
+      {"count", field(&O::count), "number of elements to seed (0: container area / element area)"},
+      {"element-area", field(&O::elementArea), "nominal area of one element as a fraction of the container; sets the count when --count is 0"},
+      {"initial-coverage", field(&O::initialCoverage), "fraction of the container the shrunken seeds cover at the start"},
+  };
+  const OptionTable<O> passes{
+      {"target-fill", field(&O::stop, &S::targetFill), "stop when element skins cover this fraction of the container"},
+      {"stall-window", field(&O::stop, &S::stallWindow), "w of eq. 4.7, in iterations"},
+      {"stall-epsilon", field(&O::stop, &S::stallEpsilon), "ε of eq. 4.7: stop when the RMS fill change per iteration falls below it"},
+      {"stall-on-measured-area", field(&O::stop, &S::stallOnMeasuredArea), "apply eq. 4.7 to the measured skin area, as the thesis does, instead of the meshes' rest area"},
+      {"max-iterations", field(&O::stop, &S::maxIterations), "hard cap on simulation iterations"},
+      {"secondary-scale", field(&O::secondary, &P::scale), "nominal size of a secondary element relative to a primary one (linear)"},
+      {"secondary-min-distance", field(&O::secondary, &P::minDistance), "d_min: secondaries go only where the negative space is at least this far from any element or wall (canonical units; 0: max(gap, L / 4), L the nominal secondary size)"},
+      {"secondary-separation", field(&O::secondary, &P::separation), "d_sep: secondary seeds keep at least this far apart (canonical units; 0: L, the nominal secondary size)"},
+      {"secondary-resolution", field(&O::secondary, &P::resolution), "distance transform cells across the container for seeding secondaries"},
+      {"secondary-target-fill", field(&O::secondary, &P::targetFill), "the secondary pass stops when skins (and fixed elements) cover this fraction of the container"},
+      {"shape-matching", field(&O::shapeMatching, &CornerDockingOptions::enabled), "place elements that fit the container's sharp convex corners there first and dock them (thesis 4.7)"},
+      {"docking-strength", field(&O::shapeMatching, &CornerDockingOptions::dockingStrength), "with --shape-matching: spring strength holding each matched element's tip on its corner"},
+      {"orientation-torsion", field(&O::orientation, &OrientationOptions::torsion), "k_tor used with --orientation upright/field when --k-torsion is 0"},
+  };
+  return elements + mounted(simulationOptions(), field(&O::simulation)) + passes +
+         mounted(runOptions(), field(&O::run));
+}
+
+std::string presetHelp() {
+  std::string help = "force strength preset, applied before --config and flags:";
+  for (const RepulsionPreset& p : repulsionPresets()) help += "\n  " + p.name + ": " + p.description;
+  return help;
+}
+
+// The options given as text (parsed into RepulsionOptions by the run) and the presets.
+OptionTable<PackArguments> textOptionTable() {
+  using A = PackArguments;
+  return {
+      {"preset", field(&A::preset), presetHelp()},
+      {"rigid", field(&A::rigid), "nearly rigid elements (very stiff edge springs, thesis 6.4): same as --preset rigid"},
+      {"tile", field(&A::tile), "pack a tileable W,H rectangle (input units) instead of a container: elements crossing an edge come back on the opposite one (thesis 4.8)"},
+      {"orientation", field(&A::orientation), "preferred orientation (eq. 4.6): random (random seeded angles, no torsion unless --k-torsion), upright (seeded as drawn and held there), field (seeded at and held to --orientation-field)"},
+      {"orientation-field", field(&A::orientationField), "AXIS:FROM:TO, the rest angle in degrees (clockwise on screen, as SVG rotate) turning linearly from the container's left (x) or top (y) edge to the opposite one; alone it implies --orientation field"},
+      {"container-layer", field(&A::containerLayer), "the scene layer holding the containers; 'elements' makes each element of a previous Pak packing a container"},
+  };
+}
+
+}  // namespace
+
+const OptionTable<PackArguments>& packOptions() {
+  static const OptionTable<PackArguments> table =
+      mounted(repulsionOptionTable(), field(&PackArguments::options)) + textOptionTable();
+  return table;
+}
+
+}  // namespace pak::cli

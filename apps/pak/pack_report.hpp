@@ -1,0 +1,28 @@
+#pragma once
+// What `pak pack` measures on its result, and the JSON report (--report) of a run.
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "pack_arguments.hpp"
+#include "pak/geom/verify.hpp"
+
+namespace pak::cli {
+
+// The result's invariants, on the art as drawn.
+struct PackAudit {
+  std::vector<Region> outlines;  // each element's art; a tile's with its clones, cut at the tile
+  PackingCheck check;            // the fixed elements count as one more (immovable) element
+  double containerArea = 0.0;
+  double artArea = 0.0;          // the elements' and fixed elements' art
+};
+PackAudit auditPacking(const Packing& packing);
+
+struct PackTimes {
+  double wall = 0.0, simulation = 0.0;  // seconds
+};
+
+nlohmann::json packReport(const PackArguments& args, const Scene& scene, const Packing& packing, const PackAudit& audit,
+                          const PackTimes& times);
+
+}  // namespace pak::cli

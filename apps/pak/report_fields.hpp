@@ -1,0 +1,27 @@
+#pragma once
+// Report fields the packing commands share, so each has one spelling.
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "pak/geom/verify.hpp"
+
+namespace pak::cli {
+
+// A report's start: the run's parameters, and the units its distances are in.
+nlohmann::json reportWithParameters(const nlohmann::json& parameters, const char* units);
+
+// overlap-count, overlap-area, elements-outside, outside-area, problems.
+void reportCheck(nlohmann::json& report, const PackingCheck& check);
+
+// elements-per-container: how many of `elements` (each with a `container` index) each of the
+// `containers` containers holds.
+template <class Element>
+void reportElementsPerContainer(nlohmann::json& report, const std::vector<Element>& elements, std::size_t containers) {
+  std::vector<int> perContainer(containers, 0);
+  for (const Element& e : elements)
+    if (e.container >= 0 && e.container < static_cast<int>(perContainer.size())) ++perContainer[e.container];
+  report["elements-per-container"] = perContainer;
+}
+
+}  // namespace pak::cli

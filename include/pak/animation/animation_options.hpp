@@ -1,0 +1,37 @@
+#pragma once
+// What packAnimation takes. Distances are in canonical units (the container's bounding square
+// is 1000 wide), times along the t axis of SpacetimeParameters::timeLength.
+#include "pak/animation/spacetime_parameters.hpp"
+#include "pak/sim/run_options.hpp"
+#include "pak/sim/simulation_parameters.hpp"
+
+namespace pak {
+
+// When the spacetime simulation stops (5.5.3): whichever comes first, or when every slice
+// reached the growth cap (SpacetimeParameters::maxGrowth).
+struct AnimationStopRule {
+  double closeness = 6.0;  // every slice is this close to another element or the wall (thesis 0.006 of the container)
+  // The slices' mean growth rose by less than this over the last stallWindow iterations (a
+  // slice grows by growthRate × Δt = 0.001 per free iteration).
+  double stallGrowth = 0.005;
+  int stallWindow = 100;
+  int maxIterations = 3000;
+};
+
+struct AnimationOptions {
+  int slices = 0;                 // n_s; 0: the script's
+  // Nominal skin area of one element (growth 1) as a fraction of the container's area;
+  // 0: 1 / (number of elements), the size at which they would exactly fill it.
+  double elementArea = 0.0;
+  double gap = 0.08;              // d_gap as a fraction of the nominal element size (thesis 0.08)
+  double meshSpacing = 0.0;       // slice mesh spacing, canonical units; 0: nominal size / 4
+  double initialScale = 0.1;      // elements start shrunk to this (thesis 5–10 %), or less to fit
+  // RepulsionPak's forces, but the grid cell is the exact repulsion reach (5.5.1) and k_tor
+  // acts on the elements with a preferred orientation only.
+  SimulationParameters simulation{.torsionStrength = 10.0, .cellSize = 40.0};
+  SpacetimeParameters spacetime;
+  AnimationStopRule stop;
+  RunOptions run;
+};
+
+}  // namespace pak
