@@ -20,7 +20,7 @@ SpacetimeSimulation::SpacetimeSimulation(const RegionIndex& container, double co
       containerArea_(containerArea),
       slices_(slices),
       parameters_(parameters),
-      integrator_(parameters.timeStep, parameters.velocityCap, parameters.damping, DampingOrder::AfterForce),
+      integrator_(parameters.timeStep, parameters.velocityCap, parameters.damping),
       growthRule_(parameters.growthRate, parameters.timeStep, parameters.maxGrowth),
       pool_(pool) {
   assert(slices >= 2);

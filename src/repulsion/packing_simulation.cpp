@@ -26,7 +26,7 @@ PackingSimulation::PackingSimulation(const RegionIndex& container, double contai
     : container_(container),
       containerArea_(containerArea),
       parameters_(parameters),
-      integrator_(parameters.timeStep, parameters.velocityCap, parameters.damping, DampingOrder::BeforeForce),
+      integrator_(parameters.timeStep, parameters.velocityCap, parameters.damping),
       growthRule_(parameters.growthRate, parameters.timeStep),
       pool_(pool) {}
 

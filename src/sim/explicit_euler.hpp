@@ -23,26 +23,21 @@ bool allFinite(const V* begin, const V* end) {
   return true;
 }
 
-// Where the damping acts. The two simulators grew apart here; both are kept until they are
-// unified, so that moving them onto this integrator changes no number.
-enum class DampingOrder {
-  BeforeForce,  // v ← (1 − d) v + Δt f   (RepulsionPak)
-  AfterForce,   // v ← (1 − d) (v + Δt f) (AnimationPak)
-};
-
+// v ← (1 − d) v + Δt f, capped at the velocity cap; x ← x + Δt v. The damping d takes a
+// fraction of the velocity the vertex arrives with, not of this step's push, so a vertex at
+// rest answers a force in full.
 class ExplicitEuler {
  public:
   // damping d ∈ [0, 1): the fraction of the velocity lost per step; velocityCap > 0.
-  ExplicitEuler(double timeStep, double velocityCap, double damping, DampingOrder order = DampingOrder::BeforeForce)
-      : timeStep_(timeStep), velocityCap_(velocityCap), keep_(1.0 - damping), order_(order) {
+  ExplicitEuler(double timeStep, double velocityCap, double damping)
+      : timeStep_(timeStep), velocityCap_(velocityCap), keep_(1.0 - damping) {
     assert(timeStep > 0.0 && velocityCap > 0.0 && damping >= 0.0 && damping < 1.0);
   }
 
   // One step of one vertex under `force`.
   template <class V>
   void advance(V& position, V& velocity, V force) const {
-    V next = order_ == DampingOrder::BeforeForce ? velocity * keep_ + force * timeStep_
-                                                 : (velocity + force * timeStep_) * keep_;
+    V next = velocity * keep_ + force * timeStep_;
     const double speed = length(next);
     if (speed > velocityCap_) next *= velocityCap_ / speed;
     velocity = next;
@@ -51,7 +46,6 @@ class ExplicitEuler {
 
  private:
   double timeStep_, velocityCap_, keep_;
-  DampingOrder order_;
 };
 
 }  // namespace pak

@@ -28,13 +28,15 @@ TEST(ExplicitEuler, DampingScalesTheOldVelocityOnly) {
   EXPECT_DOUBLE_EQ(x.y, 0.5);
 }
 
-TEST(ExplicitEuler, DampingAfterForceScalesTheNewVelocity) {
-  // v ← (1 − d)(v + Δt f): 0.8 ((5, 0) + (0, 1)).
-  const ExplicitEuler euler(0.5, 100.0, 0.2, DampingOrder::AfterForce);
-  Vec2 x, v{5.0, 0.0};
-  euler.advance(x, v, Vec2{0.0, 2.0});
+TEST(ExplicitEuler, SameStepInSpacetime) {
+  // AnimationPak's vertices take the same formula in (x, y, t).
+  const ExplicitEuler euler(0.5, 100.0, 0.2);
+  Vec3 x, v{5.0, 0.0, -10.0};
+  euler.advance(x, v, Vec3{0.0, 2.0, 4.0});
   EXPECT_DOUBLE_EQ(v.x, 4.0);
-  EXPECT_DOUBLE_EQ(v.y, 0.8);
+  EXPECT_DOUBLE_EQ(v.y, 1.0);
+  EXPECT_DOUBLE_EQ(v.t, -6.0);
+  EXPECT_DOUBLE_EQ(x.t, -3.0);
 }
 
 TEST(ExplicitEuler, CapKeepsTheDirectionAndLimitsTheSpeed) {
