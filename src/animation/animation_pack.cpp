@@ -7,6 +7,7 @@
 #include <cmath>
 #include <map>
 #include <numbers>
+#include <optional>
 
 #include "animation/element_animator.hpp"
 #include "animation/spacetime_simulation.hpp"
@@ -14,6 +15,8 @@
 #include "pak/geom/blue_noise.hpp"
 #include "pak/geom/rng.hpp"
 #include "sim/canonical_frame.hpp"
+#include "sim/simulation_loop.hpp"
+#include "sim/stall_window.hpp"
 
 namespace pak {
 
@@ -335,44 +338,40 @@ AnimatedPacking packAnimation(const Scene& scene, const Library& library, const 
     p.minGrowth = sim.minGrowth();
     return p;
   };
-  std::vector<double> meanGrowth(options.stop.stallWindow + 1, 0.0);
-  int recorded = 0;
-  if (resumeFrom && !resumeFrom->recentMeanGrowth.empty()) {
-    if (resumeFrom->recentMeanGrowth.size() != meanGrowth.size())
-      throw InputError("--resume", "the checkpoint was made with another --stall-window");
-    meanGrowth = resumeFrom->recentMeanGrowth;
-    recorded = resumeFrom->recorded;
-  }
-  auto state = [&] {
-    return AnimationState{sim.iteration(), sim.positions(), sim.velocities(), sim.growth(), meanGrowth, recorded};
-  };
-  result.stopReason = AnimationStop::IterationCap;
   // Mean growth of the last stallWindow + 1 iterations, by iteration number; checkpoints keep
   // it, so a resumed run stops where the uninterrupted one does.
-  while (sim.iteration() < options.stop.maxIterations) {
-    sim.step();
-    const int it = sim.iteration();
-    double mean = 0.0;
-    for (double g : sim.growth()) mean += g;
-    mean /= static_cast<double>(sim.growth().size());
-    meanGrowth[it % meanGrowth.size()] = mean;
-    ++recorded;
-    if (callbacks.onCheckpoint && callbacks.checkpointEvery > 0 && it % callbacks.checkpointEvery == 0) callbacks.onCheckpoint(state());
-    if (callbacks.onProgress && callbacks.progressEvery > 0 && it % callbacks.progressEvery == 0) callbacks.onProgress(progress());
-    if (sim.largestSliceGap() < options.stop.closeness) {
-      result.stopReason = AnimationStop::AllTouching;
-      break;
-    }
-    if (sim.minGrowth() >= options.spacetime.maxGrowth) {
-      result.stopReason = AnimationStop::GrowthCap;
-      break;
-    }
-    if (recorded > options.stop.stallWindow &&
-        mean - meanGrowth[(it - options.stop.stallWindow) % meanGrowth.size()] < options.stop.stallGrowth) {
-      result.stopReason = AnimationStop::Stalled;
-      break;
-    }
+  StallWindow meanGrowth(options.stop.stallWindow);
+  if (resumeFrom && !resumeFrom->recentMeanGrowth.empty()) {
+    if (resumeFrom->recentMeanGrowth.size() != meanGrowth.values().size())
+      throw InputError("--resume", "the checkpoint was made with another --stall-window");
+    if (resumeFrom->recorded > resumeFrom->iteration)
+      throw InputError("--resume", "the checkpoint is damaged (it recorded more iterations than it ran)");
+    meanGrowth.restore(resumeFrom->recentMeanGrowth, resumeFrom->recorded, resumeFrom->iteration);
   }
+  auto state = [&] {
+    return AnimationState{sim.iteration(), sim.positions(), sim.velocities(), sim.growth(), meanGrowth.values(),
+                          meanGrowth.recorded()};
+  };
+  const std::optional<AnimationStop> stop = runUntilStopped<AnimationStop>(
+      sim, options.stop.maxIterations, meanGrowth,
+      [&] {
+        double mean = 0.0;
+        for (double g : sim.growth()) mean += g;
+        return mean / static_cast<double>(sim.growth().size());
+      },
+      [&](int it) {
+        if (callbacks.onCheckpoint && callbacks.checkpointEvery > 0 && it % callbacks.checkpointEvery == 0)
+          callbacks.onCheckpoint(state());
+        if (callbacks.onProgress && callbacks.progressEvery > 0 && it % callbacks.progressEvery == 0)
+          callbacks.onProgress(progress());
+      },
+      [&](const StallWindow& window) -> std::optional<AnimationStop> {
+        if (sim.largestSliceGap() < options.stop.closeness) return AnimationStop::AllTouching;
+        if (sim.minGrowth() >= options.spacetime.maxGrowth) return AnimationStop::GrowthCap;
+        if (window.full() && window.rise() < options.stop.stallGrowth) return AnimationStop::Stalled;
+        return std::nullopt;
+      });
+  result.stopReason = stop.value_or(AnimationStop::IterationCap);
   if (callbacks.onProgress) callbacks.onProgress(progress());
   sim.projectInside();  // after any checkpoint: a resumed run projects the same state
 

@@ -22,11 +22,14 @@ SpacetimeSimulation::SpacetimeSimulation(const RegionIndex& container, double co
       slices_(slices),
       parameters_(parameters),
       spacetime_(spacetime),
+      integrator_(parameters.timeStep, parameters.velocityCap, parameters.damping),
+      growthRule_(parameters.growthRate, parameters.timeStep, spacetime.maxGrowth),
       pool_(pool) {
   assert(slices >= 2);
 }
 
 int SpacetimeSimulation::addElement(const SpacetimeElementSetup& setup) {
+  assert(!finalized_ && "elements are added before finalize");
   const ElementMesh& mesh = *setup.mesh;
   const int n = static_cast<int>(mesh.mesh.vertices.size());
   assert(static_cast<int>(setup.reference.size()) == n * slices_);
@@ -86,6 +89,7 @@ int SpacetimeSimulation::addElement(const SpacetimeElementSetup& setup) {
 }
 
 void SpacetimeSimulation::addLoop(int from, int to, Vec2 turn) {
+  assert(!finalized_ && "loops are added before finalize");
   assert(elements_[from].mesh == elements_[to].mesh && lengthSquared(turn) > 0.0);
   loops_.push_back({from, to, turn});
 }
@@ -103,6 +107,7 @@ Vec2 SpacetimeSimulation::loopTurn(const Vec2* first, const Vec2* last, int coun
 }
 
 int SpacetimeSimulation::projectInside() {
+  assert(finalized_);
   constexpr double kInsideMargin = 1e-3;  // canonical units
   int moved = 0;
   for (Vec3& x : position_) {
@@ -116,6 +121,8 @@ int SpacetimeSimulation::projectInside() {
 }
 
 void SpacetimeSimulation::finalize(const Box& area) {
+  assert(!finalized_ && "finalize is called once");
+  finalized_ = true;
   const std::size_t nv = position_.size();
   velocity_.assign(nv, {});
   force_.assign(nv, {});
@@ -126,37 +133,27 @@ void SpacetimeSimulation::finalize(const Box& area) {
   targetPull_.assign(nv, {kNoTarget, kNoTarget});
   for (const auto& target : pendingTargets_) targetPull_[target.vertex] = target.position;
 
-  // Springs as CSR at both ends, in a fixed order.
-  springStart_.assign(nv + 1, 0);
-  for (const PendingSpring& s : pending_) ++springStart_[s.a + 1], ++springStart_[s.b + 1];
-  for (std::size_t v = 0; v < nv; ++v) springStart_[v + 1] += springStart_[v];
-  springOther_.assign(springStart_[nv], 0);
-  springStiffness_.assign(springStart_[nv], 0.0);
-  std::vector<int> fill(springStart_.begin(), springStart_.end() - 1);
-  for (const PendingSpring& s : pending_) {
-    springOther_[fill[s.a]] = s.b, springStiffness_[fill[s.a]++] = s.stiffness;
-    springOther_[fill[s.b]] = s.a, springStiffness_[fill[s.b]++] = s.stiffness;
-  }
+  // Springs by vertex, in spring order at each end (deterministic sums).
+  springsAt_ = buildVertexAdjacency<SpringEnd>(nv, [&](auto&& emit) {
+    for (const PendingSpring& s : pending_) {
+      emit(s.a, SpringEnd{s.b, s.stiffness});
+      emit(s.b, SpringEnd{s.a, s.stiffness});
+    }
+  });
   pending_.clear();
   pending_.shrink_to_fit();
 
   // In-slice triangles incident to each vertex.
-  triangleStart_.assign(nv + 1, 0);
-  for (const ElementRecord& e : elements_)
-    for (int s = 0; s < slices_; ++s)
-      for (const auto& tri : e.mesh->mesh.triangles)
-        for (int corner : tri) ++triangleStart_[e.vertexBegin + s * e.verticesPerSlice + corner + 1];
-  for (std::size_t v = 0; v < nv; ++v) triangleStart_[v + 1] += triangleStart_[v];
-  incidentTriangle_.assign(triangleStart_[nv], {});
-  fill.assign(triangleStart_.begin(), triangleStart_.end() - 1);
-  for (const ElementRecord& e : elements_)
-    for (int s = 0; s < slices_; ++s) {
-      const int base = e.vertexBegin + s * e.verticesPerSlice;
-      for (const auto& tri : e.mesh->mesh.triangles) {
-        std::array<int, 3> global{base + tri[0], base + tri[1], base + tri[2]};
-        for (int corner : global) incidentTriangle_[fill[corner]++] = global;
+  trianglesAt_ = buildVertexAdjacency<std::array<int, 3>>(nv, [&](auto&& emit) {
+    for (const ElementRecord& e : elements_)
+      for (int s = 0; s < slices_; ++s) {
+        const int base = e.vertexBegin + s * e.verticesPerSlice;
+        for (const auto& tri : e.mesh->mesh.triangles) {
+          const std::array<int, 3> global{base + tri[0], base + tri[1], base + tri[2]};
+          for (int corner : global) emit(corner, global);
+        }
       }
-    }
+  });
 
   const std::size_t ns = growth_.size();
   sliceCentre_.assign(ns, {});
@@ -276,31 +273,11 @@ const BlockOffsets kBlock;
 // envelope triangles in the 3 × 3 × 3 block of cells around it, and for elements seen only in
 // the outer shell of the 5 × 5 × 5 block, the centre of their triangles there. A group or
 // triangle that cannot come closer than the element's best hit so far is skipped.
-int SpacetimeSimulation::gatherHits(int v, Hit* hits) const {
+void SpacetimeSimulation::gatherHits(int v, Hits& hits) const {
   const Vec3 x = position_[v];
   const int self = sliceElement_[sliceOf_[v]];
   const double reach = parameters_.cellSize, shellReach = 2.5 * parameters_.cellSize;
   const auto [cx, cy, ct] = cellOf(x);
-  int count = 0;
-  auto find = [&](int element) {
-    for (int k = 0; k < count; ++k)
-      if (hits[k].element == element) return k;
-    return -1;
-  };
-  auto record = [&](int element, double d2, Vec3 point, bool exact) {
-    if (int k = find(element); k >= 0) {
-      if ((exact && !hits[k].exact) || (exact == hits[k].exact && d2 < hits[k].d2)) hits[k] = {element, d2, point, exact};
-      return;
-    }
-    if (count < kMaxHits) {
-      hits[count++] = {element, d2, point, exact};
-      return;
-    }
-    int worst = 0;  // full: replace the farthest approximate (then farthest) hit
-    for (int k = 1; k < count; ++k)
-      if ((hits[worst].exact && !hits[k].exact) || (hits[worst].exact == hits[k].exact && hits[k].d2 > hits[worst].d2)) worst = k;
-    if ((exact && !hits[worst].exact) || (exact == hits[worst].exact && d2 < hits[worst].d2)) hits[worst] = {element, d2, point, exact};
-  };
   auto cellIndex = [&](const std::array<int, 3>& o) {
     const int xx = cx + o[0], y = cy + o[1], t = ct + o[2];
     if (xx < 0 || xx >= nx_ || y < 0 || y >= ny_ || t < 0 || t >= nt_) return -1;
@@ -315,7 +292,7 @@ int SpacetimeSimulation::gatherHits(int v, Hit* hits) const {
       const double toCentre = distance(x, group.centre);
       const double bound = toCentre - group.radius;  // nothing in the group is nearer
       if (bound > reach) continue;
-      const int known = find(group.element);
+      const int known = hits.find(group.element);
       double best = known >= 0 && hits[known].exact ? hits[known].d2 : reach * reach;
       if (bound > 0.0 && bound * bound >= best) continue;
       for (int k = group.begin; k < group.end; ++k) {
@@ -327,7 +304,7 @@ int SpacetimeSimulation::gatherHits(int v, Hit* hits) const {
         const double d2 = lengthSquared(q - x);
         if (d2 < best) {
           best = d2;
-          record(group.element, d2, q, true);
+          hits.offer({group.element, d2, q, true});
         }
       }
     }
@@ -340,12 +317,11 @@ int SpacetimeSimulation::gatherHits(int v, Hit* hits) const {
       if (group.element == self) continue;
       const double d2 = lengthSquared(x - group.centre);
       if (d2 >= shellReach * shellReach) continue;
-      const int known = find(group.element);
+      const int known = hits.find(group.element);
       if (known >= 0 && hits[known].exact) continue;
-      record(group.element, d2, group.centre, false);
+      hits.offer({group.element, d2, group.centre, false});
     }
   }
-  return count;
 }
 
 // Whether x lies inside `element`'s cross-section at time x.t: the skin rings of the two
@@ -387,22 +363,21 @@ void SpacetimeSimulation::computeForces(std::size_t begin, std::size_t end) {
     bool inside = false;
     double gap = kFar;
     if (isBoundary_[v]) {
-      Hit hits[kMaxHits];
-      const int count = gatherHits(static_cast<int>(v), hits);
-      for (int k = 0; k < count && !inside; ++k)
+      Hits hits;
+      gatherHits(static_cast<int>(v), hits);
+      for (int k = 0; k < hits.size() && !inside; ++k)
         if (hits[k].exact) inside = insideElementAt(hits[k].element, x);
       if (inside) {
         // Eq. 4.4 in the slice: every incident triangle pulls the vertex toward its centroid.
-        for (int k = triangleStart_[v]; k < triangleStart_[v + 1]; ++k) {
-          const auto& tri = incidentTriangle_[k];
+        for (const std::array<int, 3>& tri : trianglesAt_.of(v)) {
           const Vec3 centroid = (position_[tri[0]] + position_[tri[1]] + position_[tri[2]]) / 3.0;
           f += forces::overlap(x, Vec3{centroid.x, centroid.y, x.t}, P.overlapStrength);
         }
         gap = 0.0;
       } else {
-        for (int k = 0; k < count; ++k) {
-          f += forces::repulsion(x, hits[k].point, P.repulsionStrength, P.soft);
-          if (hits[k].exact) gap = std::min(gap, std::sqrt(hits[k].d2));
+        for (const Hit& hit : hits) {
+          f += forces::repulsion(x, hit.point, P.repulsionStrength, P.soft);
+          if (hit.exact) gap = std::min(gap, std::sqrt(hit.d2));
         }
       }
     }
@@ -410,10 +385,8 @@ void SpacetimeSimulation::computeForces(std::size_t begin, std::size_t end) {
 
     // Eq. 4.3: springs, rest lengths from the reference shapes at the current growth.
     const Vec3 r = referencePoint_[v];
-    for (int k = springStart_[v]; k < springStart_[v + 1]; ++k) {
-      const int o = springOther_[k];
-      f += forces::edge(x, position_[o], distance(r, referencePoint_[o]), springStiffness_[k]);
-    }
+    for (const SpringEnd& spring : springsAt_.of(v))
+      f += forces::edge(x, position_[spring.other], distance(r, referencePoint_[spring.other]), spring.stiffness);
 
     // Eq. 4.5 in (x, y): the container is extruded along t.
     const Vec2 xy = spatial(x);
@@ -445,15 +418,7 @@ void SpacetimeSimulation::computeForces(std::size_t begin, std::size_t end) {
 }
 
 void SpacetimeSimulation::integrate(std::size_t begin, std::size_t end) {
-  const SimulationParameters& P = parameters_;
-  const double keep = 1.0 - P.damping;
-  for (std::size_t v = begin; v < end; ++v) {
-    Vec3 vel = (velocity_[v] + force_[v] * P.timeStep) * keep;
-    const double speed = length(vel);
-    if (speed > P.velocityCap) vel = vel * (P.velocityCap / speed);
-    velocity_[v] = vel;
-    position_[v] += vel * P.timeStep;
-  }
+  for (std::size_t v = begin; v < end; ++v) integrator_.advance(position_[v], velocity_[v], force_[v]);
 }
 
 // 5.5.2, constraints 1 and 2: the first and last slices sit at t = 0 and t = T, and every
@@ -532,7 +497,7 @@ void SpacetimeSimulation::updateSlices(std::size_t begin, std::size_t end) {
     sliceOverlapping_[s] = overlapping ? 1 : 0;
     sliceOutside_[s] = outside ? 1 : 0;
     sliceGap_[s] = gap;
-    const double grown = std::min(spacetime_.maxGrowth, growth_[s] + parameters_.growthRate * parameters_.timeStep);
+    const double grown = growthRule_.grown(growth_[s]);
     bool smooth = true;
     if (spacetime_.growthSpread > 0.0) {  // neighbours in t as they were before this step
       const int first = element.sliceBegin, last = first + slices_ - 1;
@@ -545,6 +510,7 @@ void SpacetimeSimulation::updateSlices(std::size_t begin, std::size_t end) {
 }
 
 void SpacetimeSimulation::step() {
+  assert(finalized_ && "step only after finalize");
   const std::size_t nv = position_.size(), ns = growth_.size();
   pool_.parallelFor(nv, 2048, [&](std::size_t b, std::size_t e) { computeReferencePoints(b, e); });
   buildGrid();
@@ -561,7 +527,7 @@ void SpacetimeSimulation::step() {
   for (std::size_t s = 0; s < ns; ++s) {
     area += sliceArea_[s];
     largestGap = std::max(largestGap, sliceGap_[s]);
-    growing += (!sliceOverlapping_[s] && !sliceOutside_[s] && growth_[s] < spacetime_.maxGrowth) ? 1 : 0;
+    growing += (!sliceOverlapping_[s] && !sliceOutside_[s] && growthRule_.belowCap(growth_[s])) ? 1 : 0;
     overlapping += sliceOverlapping_[s];
   }
   fill_ = ns > 0 ? area / (containerArea_ * slices_) : 0.0;
@@ -569,6 +535,7 @@ void SpacetimeSimulation::step() {
   growingSlices_ = growing;
   overlappingSlices_ = overlapping;
   ++iteration_;
+  assert(allFinite(position_.data(), position_.data() + position_.size()) && "a step left a non-finite position");
 }
 
 double SpacetimeSimulation::minGrowth() const {
@@ -577,6 +544,7 @@ double SpacetimeSimulation::minGrowth() const {
 
 void SpacetimeSimulation::restoreState(int iteration, std::vector<Vec3> positions, std::vector<Vec3> velocities,
                                        std::vector<double> growth) {
+  assert(finalized_ && "state is restored after finalize");
   assert(positions.size() == position_.size() && velocities.size() == velocity_.size() && growth.size() == growth_.size());
   iteration_ = iteration;
   position_ = std::move(positions);

@@ -1,11 +1,13 @@
 #pragma once
 // The AnimationPak simulation (thesis 5.5): spacetime elements — stacks of mesh slices joined
 // by time springs — repel, deform and grow in (x, y, t) inside the container extruded along t.
-// It is RepulsionPak's mass-spring scheme in one more dimension: the same force laws
-// (pak/forces.hpp), the same explicit Euler step with a velocity cap, forces from a frozen
-// snapshot in parallel (results do not depend on the thread count), and no allocation inside
-// `step`. What is new: envelope triangles in a 3D grid for the neighbour queries (5.5.1), the
-// temporal force, target-point springs, the slice constraints (5.5.2) and per-slice growth (5.5.3).
+// It is RepulsionPak's mass-spring scheme in one more dimension, on the same core (src/sim):
+// the same force laws (sim/forces.hpp), the same explicit Euler step with damping and a
+// velocity cap (sim/explicit_euler.hpp), the same growth rule, hit list and adjacency tables,
+// forces from a frozen snapshot in parallel (results do not depend on the thread count), and
+// no allocation inside `step`. What is new: envelope triangles in a 3D grid for the neighbour
+// queries (5.5.1), the temporal force, target-point springs, the slice constraints (5.5.2)
+// and per-slice growth (5.5.3).
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -14,8 +16,12 @@
 #include "pak/geom/vec3.hpp"
 #include "pak/sim/element_mesh.hpp"
 #include "pak/sim/simulation_parameters.hpp"
+#include "sim/explicit_euler.hpp"
+#include "sim/growth_rule.hpp"
+#include "sim/nearest_hits.hpp"
 #include "sim/parallel.hpp"
 #include "sim/region_index.hpp"
+#include "sim/vertex_adjacency.hpp"
 
 namespace pak {
 
@@ -68,7 +74,7 @@ class SpacetimeSimulation {
   int vertexBegin(int element) const { return elements_[element].vertexBegin; }
   int verticesPerSlice(int element) const { return elements_[element].verticesPerSlice; }
   std::size_t vertexCount() const { return position_.size(); }
-  std::size_t springCount() const { return springOther_.size() / 2; }
+  std::size_t springCount() const { return springsAt_.entries.size() / 2; }
   std::size_t envelopeTriangleCount() const { return envelope_.size(); }
   // Mean over slices of the skins' area over the container area.
   double fill() const { return fill_; }
@@ -87,12 +93,21 @@ class SpacetimeSimulation {
     double torsionStrength;
   };
   struct EnvelopeGroup { int element, begin, end; Vec3 centre; double radius; };
-  struct Hit { int element; double d2; Vec3 point; bool exact; };
+  // The nearest point of another element: exact (on an envelope triangle) or approximate
+  // (the centre of its triangles in a far cell); any exact hit is nearer than an approximate one.
+  struct Hit {
+    int element; double d2; Vec3 point; bool exact;
+    int key() const { return element; }
+    bool nearerThan(const Hit& other) const {
+      return (exact && !other.exact) || (exact == other.exact && d2 < other.d2);
+    }
+  };
   static constexpr int kMaxHits = 16;
+  using Hits = NearestHitList<Hit, kMaxHits>;
 
   void computeReferencePoints(std::size_t begin, std::size_t end);
   void buildGrid();
-  int gatherHits(int v, Hit* hits) const;
+  void gatherHits(int v, Hits& hits) const;
   bool insideElementAt(int element, Vec3 x) const;
   void computeForces(std::size_t begin, std::size_t end);
   void integrate(std::size_t begin, std::size_t end);
@@ -107,7 +122,10 @@ class SpacetimeSimulation {
   int slices_;
   SimulationParameters parameters_;
   SpacetimeParameters spacetime_;
+  ExplicitEuler integrator_;
+  GrowthRule growthRule_;  // per slice, capped at maxGrowth
   ThreadPool& pool_;
+  bool finalized_ = false;
   int iteration_ = 0;
   double fill_ = 0.0, largestSliceGap_ = 0.0;
   int growingSlices_ = 0, overlappingSlices_ = 0;
@@ -120,12 +138,11 @@ class SpacetimeSimulation {
   std::vector<std::uint8_t> isBoundary_, insideOther_, outside_;
   std::vector<double> nearestGap_;         // distance to the nearest other element or wall
   std::vector<Vec2> targetPull_;           // target-point spring anchor, per vertex (NaN: none)
-  // Springs (CSR per vertex; each spring appears at both ends).
-  std::vector<int> springStart_, springOther_;
-  std::vector<double> springStiffness_;
-  // Incident in-slice triangles (CSR per vertex), for the overlap force.
-  std::vector<int> triangleStart_;
-  std::vector<std::array<int, 3>> incidentTriangle_;
+  // Springs by vertex (each spring appears at both ends).
+  struct SpringEnd { int other; double stiffness; };
+  VertexAdjacency<SpringEnd> springsAt_;
+  // Incident in-slice triangles by vertex (their corners), for the overlap force.
+  VertexAdjacency<std::array<int, 3>> trianglesAt_;
   // Per global slice.
   std::vector<int> sliceElement_, sliceVertexBegin_;
   std::vector<double> growth_, previousGrowth_, sliceTime_, restTime_;

@@ -1,6 +1,7 @@
 #include "repulsion/packing_simulation.hpp"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 
 #include "sim/forces.hpp"
@@ -23,10 +24,17 @@ inline Vec2 closestOnSegment(Vec2 p, Vec2 a, Vec2 b, double& t) {
 PackingSimulation::PackingSimulation(const RegionIndex& container, double containerArea,
                                      const SimulationParameters& parameters, ThreadPool& pool,
                                      const PackingDomain& domain)
-    : container_(container), containerArea_(containerArea), parameters_(parameters), domain_(domain), pool_(pool) {}
+    : container_(container),
+      containerArea_(containerArea),
+      parameters_(parameters),
+      domain_(domain),
+      integrator_(parameters.timeStep, parameters.velocityCap, parameters.damping),
+      growthRule_(parameters.growthRate, parameters.timeStep),
+      pool_(pool) {}
 
 int PackingSimulation::addMesh(const ElementMesh& mesh, int type, Vec2 position, double angle, double growth,
                                bool frozen) {
+  assert(!finalized_ && "meshes are added before finalize");
   MeshInstance instance;
   instance.type = type;
   instance.vertexBegin = static_cast<int>(position_.size());
@@ -64,6 +72,8 @@ int PackingSimulation::addMesh(const ElementMesh& mesh, int type, Vec2 position,
 }
 
 void PackingSimulation::finalize(const Box& area) {
+  assert(!finalized_ && "finalize is called once");
+  finalized_ = true;
   std::size_t n = position_.size();
   velocity_.assign(n, {});
   force_.assign(n, {});
@@ -75,34 +85,19 @@ void PackingSimulation::finalize(const Box& area) {
   meshOnCorner_.assign(meshes_.size(), 0);
   meshTorsionTurn_.assign(meshes_.size(), Vec2{1.0, 0.0});
 
-  // Springs by vertex: counting sort of both ends, in spring order (deterministic).
-  springStart_.assign(n + 1, 0);
-  for (auto [a, b] : pending_.ends) { ++springStart_[a + 1]; ++springStart_[b + 1]; }
-  for (std::size_t v = 0; v < n; ++v) springStart_[v + 1] += springStart_[v];
-  std::vector<int> cursor(springStart_.begin(), springStart_.end() - 1);
-  std::size_t entries = static_cast<std::size_t>(springStart_[n]);
-  springOther_.assign(entries, 0);
-  springRest_.assign(entries, 0.0);
-  springStiffness_.assign(entries, 0.0);
-  for (std::size_t s = 0; s < pending_.ends.size(); ++s) {
-    auto [a, b] = pending_.ends[s];
-    for (auto [from, to] : {std::pair{a, b}, std::pair{b, a}}) {
-      int k = cursor[from]++;
-      springOther_[k] = to;
-      springRest_[k] = pending_.rest[s];
-      springStiffness_[k] = pending_.stiffness[s];
+  // Springs by vertex, in spring order at each end (deterministic sums).
+  springsAt_ = buildVertexAdjacency<SpringEnd>(n, [&](auto&& emit) {
+    for (std::size_t s = 0; s < pending_.ends.size(); ++s) {
+      const auto [a, b] = pending_.ends[s];
+      emit(a, SpringEnd{b, pending_.rest[s], pending_.stiffness[s]});
+      emit(b, SpringEnd{a, pending_.rest[s], pending_.stiffness[s]});
     }
-  }
+  });
   pending_ = {};
-
-  triangleStart_.assign(n + 1, 0);
-  for (const auto& tri : triangles_)
-    for (int v : tri) ++triangleStart_[v + 1];
-  for (std::size_t v = 0; v < n; ++v) triangleStart_[v + 1] += triangleStart_[v];
-  cursor.assign(triangleStart_.begin(), triangleStart_.end() - 1);
-  incidentTriangle_.assign(static_cast<std::size_t>(triangleStart_[n]), 0);
-  for (std::size_t t = 0; t < triangles_.size(); ++t)
-    for (int v : triangles_[t]) incidentTriangle_[cursor[v]++] = static_cast<int>(t);
+  trianglesAt_ = buildVertexAdjacency<int>(n, [&](auto&& emit) {
+    for (std::size_t t = 0; t < triangles_.size(); ++t)
+      for (int v : triangles_[t]) emit(v, static_cast<int>(t));
+  });
 
   grid_.configure(area, parameters_.cellSize, segmentMesh_.size());
   if (periodic()) vertexExtent_ = bounds(position_);
@@ -140,10 +135,9 @@ void PackingSimulation::prepareSkins(std::size_t meshBegin, std::size_t meshEnd)
   }
 }
 
-int PackingSimulation::nearestSkinPoints(Vec2 p, int excludeMesh, SkinHit* hits) const {
-  int count = 0;
-  nearestSkinPointsOf(p, Vec2{}, 0, excludeMesh, hits, count);
-  if (!periodic()) return count;
+void PackingSimulation::nearestSkinPoints(Vec2 p, int excludeMesh, SkinHits& hits) const {
+  nearestSkinPointsOf(p, Vec2{}, 0, excludeMesh, hits);
+  if (!periodic()) return;
   // Thesis 4.8: the clones in the 8 neighbouring cells act like their originals. A clone at
   // offset o near p is the original near p - o; skip offsets where p - o is out of reach.
   const double reach = parameters_.cellSize;
@@ -152,9 +146,8 @@ int PackingSimulation::nearestSkinPoints(Vec2 p, int excludeMesh, SkinHit* hits)
     if (q.x < vertexExtent_.min.x - reach || q.x > vertexExtent_.max.x + reach || q.y < vertexExtent_.min.y - reach ||
         q.y > vertexExtent_.max.y + reach)
       continue;
-    nearestSkinPointsOf(q, offset, image, -1, hits, count);  // a mesh's own clones repel it too
+    nearestSkinPointsOf(q, offset, image, -1, hits);  // a mesh's own clones repel it too
   }
-  return count;
 }
 
 Vec2 PackingSimulation::periodicOffset(int image) const {
@@ -163,8 +156,8 @@ Vec2 PackingSimulation::periodicOffset(int image) const {
   return {kCell[image][0] * domain_.period.x, kCell[image][1] * domain_.period.y};
 }
 
-void PackingSimulation::nearestSkinPointsOf(Vec2 p, Vec2 offset, int image, int excludeMesh, SkinHit* hits,
-                                            int& count) const {
+void PackingSimulation::nearestSkinPointsOf(Vec2 p, Vec2 offset, int image, int excludeMesh,
+                                            SkinHits& hits) const {
   const double cutoff2 = parameters_.cellSize * parameters_.cellSize;
   grid_.forEachNear(p, 1, [&](int s) {
     int mesh = segmentMesh_[s];
@@ -174,18 +167,10 @@ void PackingSimulation::nearestSkinPointsOf(Vec2 p, Vec2 offset, int image, int 
     Vec2 q = closestOnSegment(p, position_[a], position_[b], t);
     double d2 = lengthSquared(p - q);
     if (d2 > cutoff2) return;
-    int slot = 0;
-    while (slot < count && (hits[slot].mesh != mesh || hits[slot].image != image)) ++slot;
-    if (slot == count) {
-      if (count == kMaxNeighbours) return;
-      ++count;
-    } else if (d2 >= hits[slot].d2) {
-      return;
-    }
     // The side test needs the normal at the closest feature: a vertex's pseudo-normal at the
     // segment's ends, else the segment's own.
     Vec2 normal = t <= 0.0 ? vertexNormal_[a] : (t >= 1.0 ? vertexNormal_[b] : segmentNormal_[s]);
-    hits[slot] = {mesh, s, t, d2, image == 0 ? q : q + offset, normal, image};
+    hits.offer({mesh, s, t, d2, image == 0 ? q : q + offset, normal, image});
   });
 }
 
@@ -212,25 +197,25 @@ void PackingSimulation::computeForces(std::size_t vertexBegin, std::size_t verte
     Vec2 f;
 
     // Closest skin point of each neighbouring mesh within the cut-off.
-    SkinHit near[kMaxNeighbours];
-    const int nearCount = nearestSkinPoints(x, m, near);
+    SkinHits near;
+    nearestSkinPoints(x, m, near);
     bool inside = false;
-    for (int k = 0; k < nearCount && !inside; ++k) inside = near[k].contains(x);
+    for (int k = 0; k < near.size() && !inside; ++k) inside = near[k].contains(x);
     if (inside) {
       // Eq. 4.4: no repulsion; every incident triangle pulls the vertex toward its centroid.
-      for (int k = triangleStart_[v]; k < triangleStart_[v + 1]; ++k) {
-        const auto& tri = triangles_[incidentTriangle_[k]];
+      for (int t : trianglesAt_.of(v)) {
+        const auto& tri = triangles_[t];
         Vec2 centroid = (position_[tri[0]] + position_[tri[1]] + position_[tri[2]]) / 3.0;
         f += forces::overlap(x, centroid, P.overlapStrength);
       }
     } else {
-      for (int k = 0; k < nearCount; ++k) f += forces::repulsion(x, near[k].point, P.repulsionStrength, P.soft);
+      for (const SkinHit& hit : near) f += forces::repulsion(x, hit.point, P.repulsionStrength, P.soft);
     }
     insideOther_[v] = inside ? 1 : 0;
 
     // Eq. 4.3: springs, rest lengths scaled by the mesh's growth.
-    for (int k = springStart_[v]; k < springStart_[v + 1]; ++k)
-      f += forces::edge(x, position_[springOther_[k]], springRest_[k] * mesh.growth, springStiffness_[k]);
+    for (const SpringEnd& spring : springsAt_.of(v))
+      f += forces::edge(x, position_[spring.other], spring.rest * mesh.growth, spring.stiffness);
 
     // Eq. 4.5: back into the container (its own one, when there are several). A periodic tile
     // has no walls (thesis 4.8).
@@ -262,6 +247,7 @@ void PackingSimulation::computeForces(std::size_t vertexBegin, std::size_t verte
 }
 
 int PackingSimulation::projectInside() {
+  assert(finalized_);
   if (periodic()) return 0;
   constexpr double kInsideMargin = 1e-3;  // canonical units
   int moved = 0;
@@ -305,10 +291,9 @@ void PackingSimulation::applyCornerForces() {
   std::fill(meshOnCorner_.begin(), meshOnCorner_.end(), 0);
   for (const Corner& corner : corners_) {
     const Vec2 c = corner.position;
-    SkinHit hits[kMaxNeighbours];
-    const int count = nearestSkinPoints(c, -1, hits);
-    for (int k = 0; k < count; ++k) {
-      const SkinHit& h = hits[k];
+    SkinHits hits;
+    nearestSkinPoints(c, -1, hits);
+    for (const SkinHit& h : hits) {
       if (meshes_[h.mesh].frozen || !h.contains(c)) continue;
       if (corner.container >= 0 && meshes_[h.mesh].container != corner.container) continue;
       int a = segmentEnds_[2 * h.segment], b = segmentEnds_[2 * h.segment + 1];
@@ -327,16 +312,8 @@ void PackingSimulation::applyDockForces() {
 }
 
 void PackingSimulation::integrate(std::size_t vertexBegin, std::size_t vertexEnd) {
-  const double dt = parameters_.timeStep, cap = parameters_.velocityCap;
-  const double keep = 1.0 - parameters_.damping;
-  for (std::size_t v = vertexBegin; v < vertexEnd; ++v) {
-    if (meshes_[meshOf_[v]].frozen) continue;
-    Vec2 vel = velocity_[v] * keep + force_[v] * dt;
-    double speed = length(vel);
-    if (speed > cap) vel *= cap / speed;
-    velocity_[v] = vel;
-    position_[v] += vel * dt;
-  }
+  for (std::size_t v = vertexBegin; v < vertexEnd; ++v)
+    if (!meshes_[meshOf_[v]].frozen) integrator_.advance(position_[v], velocity_[v], force_[v]);
 }
 
 void PackingSimulation::updateMeshes(std::size_t meshBegin, std::size_t meshEnd) {
@@ -357,6 +334,7 @@ void PackingSimulation::updateMeshes(std::size_t meshBegin, std::size_t meshEnd)
 }
 
 void PackingSimulation::step() {
+  assert(finalized_ && "step only after finalize");
   if (periodic()) {
     pool_.parallelFor(meshes_.size(), 4, [this](std::size_t b, std::size_t e) { wrapMeshes(b, e); });
     vertexExtent_ = bounds(position_);
@@ -374,13 +352,14 @@ void PackingSimulation::step() {
   // wall keeps growing until its art crosses it).
   double total = 0.0, rest = 0.0;
   for (MeshInstance& mesh : meshes_) {
-    if (canGrow(mesh)) mesh.growth += parameters_.growthRate * parameters_.timeStep;
+    mesh.growth = growthRule_.next(mesh.growth, canGrow(mesh));
     total += mesh.area;
     rest += mesh.restArea * mesh.growth * mesh.growth;
   }
   fill_ = (total + domain_.occupiedArea) / containerArea_;
   restFill_ = (rest + domain_.occupiedArea) / containerArea_;
   ++iteration_;
+  assert(allFinite(position_.data(), position_.data() + position_.size()) && "a step left a non-finite position");
 }
 
 int PackingSimulation::growingCount() const {

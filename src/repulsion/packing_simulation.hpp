@@ -1,16 +1,24 @@
 #pragma once
 // The RepulsionPak mass-spring simulation (thesis 4.5): all meshes' vertices in contiguous
-// arrays, forces computed from a frozen snapshot of positions (Jacobi) in parallel, then an
-// explicit Euler step with a velocity cap, then growth. Nothing is allocated inside `step`.
+// arrays, forces computed from a frozen snapshot of positions (Jacobi) in parallel, then the
+// shared explicit Euler step (sim/explicit_euler.hpp), then growth (sim/growth_rule.hpp).
+// Nothing is allocated inside `step`.
+#include <array>
+#include <cassert>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "pak/repulsion/orientation.hpp"
 #include "pak/sim/simulation_parameters.hpp"
 #include "pak/sim/element_mesh.hpp"
+#include "sim/explicit_euler.hpp"
+#include "sim/growth_rule.hpp"
+#include "sim/nearest_hits.hpp"
 #include "sim/parallel.hpp"
 #include "sim/region_index.hpp"
 #include "sim/segment_grid.hpp"
+#include "sim/vertex_adjacency.hpp"
 
 namespace pak {
 
@@ -44,7 +52,7 @@ class PackingSimulation {
                     ThreadPool& pool, const PackingDomain& domain = {});
 
   // Places a copy of `mesh` scaled by `growth`, rotated by `angle` (radians) and centred at
-  // `position`. Call `finalize` after the last one.
+  // `position`. Call `finalize` after the last one, and `step` only after `finalize`.
   int addMesh(const ElementMesh& mesh, int type, Vec2 position, double angle, double growth, bool frozen = false);
   // Builds the adjacency tables and sizes the neighbour grid over `area`.
   void finalize(const Box& area);
@@ -60,7 +68,10 @@ class PackingSimulation {
   void setContainerParts(std::vector<const RegionIndex*> parts) { parts_ = std::move(parts); }
   // Torsion (eq. 4.6) toward the field's angle at each mesh's current centre instead of the
   // angle it was added with. Call before `finalize`.
-  void setOrientationField(const OrientationRamp& ramp) { orientationRamp_ = ramp; }
+  void setOrientationField(const OrientationRamp& ramp) {
+    assert(!finalized_);
+    orientationRamp_ = ramp;
+  }
   // Docking springs (shape matching, thesis 4.7): each pulls one vertex toward its anchor with
   // force strength × (anchor − x), holding a matched element at its container corner.
   struct Dock { int vertex; Vec2 anchor; };
@@ -88,7 +99,7 @@ class PackingSimulation {
   static bool canGrow(const MeshInstance& m) { return !m.frozen && !m.overlapping && !m.outside; }
   bool vertexInsideOther(int v) const { return insideOther_[v] != 0; }
   bool vertexOutsideContainer(int v) const { return outsideContainer_[v] != 0; }
-  std::size_t springCount() const { return springOther_.size() / 2; }
+  std::size_t springCount() const { return springsAt_.entries.size() / 2; }
   const SimulationParameters& parameters() const { return parameters_; }
 
  private:
@@ -107,10 +118,13 @@ class PackingSimulation {
     Vec2 point, normal;  // outward normal at the closest feature
     int image = 0;       // which periodic clone of `mesh` (0: the mesh itself); see periodicOffset
     bool contains(Vec2 p) const { return dot(p - point, normal) < 0.0; }
+    std::pair<int, int> key() const { return {mesh, image}; }  // each clone is a neighbour of its own
+    bool nearerThan(const SkinHit& other) const { return d2 < other.d2; }
   };
-  int nearestSkinPoints(Vec2 p, int excludeMesh, SkinHit* hits) const;
+  using SkinHits = NearestHitList<SkinHit, kMaxNeighbours>;
+  void nearestSkinPoints(Vec2 p, int excludeMesh, SkinHits& hits) const;
   // Periodic domain (tile mode): the hits of p - offset, reported at the clone `image`.
-  void nearestSkinPointsOf(Vec2 p, Vec2 offset, int image, int excludeMesh, SkinHit* hits, int& count) const;
+  void nearestSkinPointsOf(Vec2 p, Vec2 offset, int image, int excludeMesh, SkinHits& hits) const;
   bool periodic() const { return domain_.period.x > 0.0 && domain_.period.y > 0.0; }
   Vec2 periodicOffset(int image) const;
   // A mesh whose centre left the tile moves whole by ±W / ±H (never single vertices).
@@ -120,7 +134,10 @@ class PackingSimulation {
   double containerArea_;
   SimulationParameters parameters_;
   PackingDomain domain_;
+  ExplicitEuler integrator_;
+  GrowthRule growthRule_;  // no cap: a mesh grows while it has room
   ThreadPool& pool_;
+  bool finalized_ = false;
   int iteration_ = 0;
   double fill_ = 0.0;
   double restFill_ = 0.0;
@@ -132,11 +149,11 @@ class PackingSimulation {
   std::vector<std::uint8_t> insideOther_, outsideContainer_;
   std::vector<Vec2> restDirection_;  // rest offset from the mesh centre, for torsion
   std::vector<Vec2> vertexNormal_;   // outward pseudo-normal (boundary vertices)
-  // Per vertex springs (CSR); each spring appears once at each end.
-  std::vector<int> springStart_, springOther_;
-  std::vector<double> springRest_, springStiffness_;
-  // Per vertex incident triangles (CSR) and the triangles themselves.
-  std::vector<int> triangleStart_, incidentTriangle_;
+  // Springs by vertex; each spring appears once at each end.
+  struct SpringEnd { int other; double rest, stiffness; };
+  VertexAdjacency<SpringEnd> springsAt_;
+  // Incident triangles by vertex (indices into triangles_), and the triangles themselves.
+  VertexAdjacency<int> trianglesAt_;
   std::vector<std::array<int, 3>> triangles_;
   // Skin segments: ends and owning mesh; outward normals updated every step.
   std::vector<int> segmentEnds_, segmentMesh_;

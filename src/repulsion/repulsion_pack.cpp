@@ -17,6 +17,8 @@
 #include "repulsion/secondary_seeding.hpp"
 #include "repulsion/seeding.hpp"
 #include "sim/canonical_frame.hpp"
+#include "sim/simulation_loop.hpp"
+#include "sim/stall_window.hpp"
 
 namespace pak {
 namespace {
@@ -183,9 +185,7 @@ StopReason simulateUntilStopped(PackingSimulation& sim, const RepulsionOptions& 
                                 int iterationOffset, const RepulsionCallbacks& callbacks, const Snapshot& snapshot) {
   // Eq. 4.7 over a window of the last w + 1 area fractions. The fraction is the meshes' rest
   // area (see restFill): the measured skin area jitters by more than ε from step to step.
-  const int w = options.stop.stallWindow;
-  std::vector<double> history(static_cast<std::size_t>(w) + 1, 0.0);
-  StopReason reason = StopReason::IterationCap;
+  StallWindow window(options.stop.stallWindow);
   auto report = [&] {
     if (!callbacks.onProgress) return;
     RepulsionProgress progress{iterationOffset + sim.iteration(), sim.fill(), sim.growingCount(),
@@ -196,27 +196,22 @@ StopReason simulateUntilStopped(PackingSimulation& sim, const RepulsionOptions& 
     }
     callbacks.onProgress(progress);
   };
-  while (sim.iteration() < options.stop.maxIterations) {
-    sim.step();
-    int it = sim.iteration();
-    history[static_cast<std::size_t>(it % (w + 1))] = options.stop.stallOnMeasuredArea ? sim.fill() : sim.restFill();
-    const int total = iterationOffset + it;
-    if (callbacks.onProgress && callbacks.progressEvery > 0 && total % callbacks.progressEvery == 0) report();
-    if (callbacks.onSnapshot && callbacks.snapshotEvery > 0 && total % callbacks.snapshotEvery == 0)
-      callbacks.onSnapshot(snapshot());
-    if (sim.fill() >= targetFill) { reason = StopReason::TargetFill; break; }
-    if (it > w) {
-      double sum = 0.0;
-      for (int i = 1; i <= w; ++i) {
-        double d = history[static_cast<std::size_t>((it - w + i) % (w + 1))] -
-                   history[static_cast<std::size_t>((it - w + i - 1) % (w + 1))];
-        sum += d * d;
-      }
-      if (std::sqrt(sum / w) < options.stop.stallEpsilon) { reason = StopReason::Stalled; break; }
-    }
-  }
+  const std::optional<StopReason> reason = runUntilStopped<StopReason>(
+      sim, options.stop.maxIterations, window,
+      [&] { return options.stop.stallOnMeasuredArea ? sim.fill() : sim.restFill(); },
+      [&](int iteration) {
+        const int total = iterationOffset + iteration;
+        if (callbacks.onProgress && callbacks.progressEvery > 0 && total % callbacks.progressEvery == 0) report();
+        if (callbacks.onSnapshot && callbacks.snapshotEvery > 0 && total % callbacks.snapshotEvery == 0)
+          callbacks.onSnapshot(snapshot());
+      },
+      [&](const StallWindow& w) -> std::optional<StopReason> {
+        if (sim.fill() >= targetFill) return StopReason::TargetFill;
+        if (w.full() && w.rms() < options.stop.stallEpsilon) return StopReason::Stalled;
+        return std::nullopt;
+      });
   report();
-  return reason;
+  return reason.value_or(StopReason::IterationCap);
 }
 
 // Whether no element's art overlaps another's or the fixed art, or leaves the container, by

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include "animation/animation_fixtures.hpp"
 #include "sim/canonical_frame.hpp"
 
@@ -141,6 +143,30 @@ TEST(SpacetimeSimulation, StiffTimeSpringsKeepConsecutiveSlicesCloser) {
   };
   EXPECT_LT(jitter(40.0), jitter(0.05));
 }
+
+#ifndef NDEBUG  // assert() is on (PAK_ASSERTIONS, or a debug build)
+TEST(SpacetimeSimulationDeathTest, AssertsTheOrderAddFinalizeStep) {
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  const Region container{Polygon{test::discRing({500, 500}, 450), {}}};
+  const RegionIndex index(container, 10.0);
+  ThreadPool pool(1);
+  SpacetimeSimulation unfinished(index, area(container), 4, SpacetimeParameters{}, pool);
+  EXPECT_DEATH(unfinished.step(), "step only after finalize");
+  TwoTubes tubes(1);  // finalized
+  SpacetimeElementSetup setup;
+  setup.mesh = &tubes.mesh;
+  EXPECT_DEATH(tubes.sim.addElement(setup), "added before finalize");
+}
+
+TEST(SpacetimeSimulationDeathTest, AssertsFinitePositionsAfterAStep) {
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  TwoTubes tubes(1);
+  std::vector<Vec3> positions = tubes.sim.positions();
+  positions[3].x = std::numeric_limits<double>::quiet_NaN();
+  tubes.sim.restoreState(0, positions, tubes.sim.velocities(), tubes.sim.growth());
+  EXPECT_DEATH(tubes.sim.step(), "non-finite position");
+}
+#endif
 
 }  // namespace
 }  // namespace pak

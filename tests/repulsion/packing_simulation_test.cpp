@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 using namespace pak;
 
@@ -183,3 +184,33 @@ TEST(PackingSimulation, ProjectInsideMovesOnlyOutsideVerticesOfMovingMeshes) {
   }
   EXPECT_EQ(sim.projectInside(), 0);  // nothing left outside
 }
+
+#ifndef NDEBUG  // assert() is on (PAK_ASSERTIONS, or a debug build)
+TEST(PackingSimulationDeathTest, AssertsTheOrderAddFinalizeStep) {
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  Region container = box(100);
+  RegionIndex index(container, 5.0);
+  ThreadPool pool(1);
+  SimulationParameters p;
+  p.cellSize = 20.0;
+  PackingSimulation sim(index, 10000.0, p, pool);
+  sim.addMesh(squareMesh(), 0, {50, 50}, 0.0, 1.0);
+  EXPECT_DEATH(sim.step(), "step only after finalize");
+  sim.finalize(area(100));
+  EXPECT_DEATH(sim.addMesh(squareMesh(), 0, {20, 20}, 0.0, 1.0), "added before finalize");
+}
+
+TEST(PackingSimulationDeathTest, AssertsFinitePositionsAfterAStep) {
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  Region container = box(100);
+  RegionIndex index(container, 5.0);
+  ThreadPool pool(1);
+  SimulationParameters p;
+  p.cellSize = 20.0;
+  PackingSimulation sim(index, 10000.0, p, pool);
+  sim.addMesh(squareMesh(), 0, {50, 50}, 0.0, 1.0);
+  sim.finalize(area(100));
+  sim.positions()[2].x = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_DEATH(sim.step(), "non-finite position");
+}
+#endif
