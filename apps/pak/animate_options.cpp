@@ -25,6 +25,7 @@ OptionTable<AnimationOptions> animationOptionTable() {
       {"stall-growth", field(&O::stop, &AnimationStopRule::stallGrowth), "stop when the slices' mean growth rose less than this over --stall-window iterations"},
       {"stall-window", field(&O::stop, &AnimationStopRule::stallWindow), "iterations over which --stall-growth is measured"},
       {"max-iterations", field(&O::stop, &AnimationStopRule::maxIterations), "stop after this many simulation steps"},
+      {"time-limit", field(&O::stop, &AnimationStopRule::timeLimit), "stop after this many seconds and write the animation as it is then (0: no limit; a run stopped by it depends on the machine's speed)"},
   };
   return own + mounted(simulationOptions(), field(&O::simulation)) + mounted(runOptions(), field(&O::run));
 }

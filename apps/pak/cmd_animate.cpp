@@ -27,6 +27,7 @@ std::uint64_t runFingerprint(const AnimateArguments& args, const Library& librar
   animateOptions().report(parameters, args);
   parameters.erase("threads");
   parameters.erase("max-iterations");
+  parameters.erase("time-limit");
   std::uint64_t h = fingerprintBytes(parameters.dump());
   h = fingerprintBytes(readTextFile(args.container), h);
   h = fingerprintBytes(readTextFile(args.animation), h);

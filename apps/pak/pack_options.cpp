@@ -24,6 +24,7 @@ OptionTable<RepulsionOptions> repulsionOptionTable() {
       {"stall-epsilon", field(&O::stop, &S::stallEpsilon), "ε of eq. 4.7: stop when the RMS fill change per iteration falls below it"},
       {"stall-on-measured-area", field(&O::stop, &S::stallOnMeasuredArea), "apply eq. 4.7 to the measured skin area, as the thesis does, instead of the meshes' rest area"},
       {"max-iterations", field(&O::stop, &S::maxIterations), "hard cap on simulation iterations"},
+      {"time-limit", field(&O::stop, &S::timeLimit), "stop after this many seconds and write the packing as it is then (0: no limit; a run stopped by it depends on the machine's speed)"},
       {"secondary-scale", field(&O::secondary, &P::scale), "nominal size of a secondary element relative to a primary one (linear)"},
       {"secondary-min-distance", field(&O::secondary, &P::minDistance), "d_min: secondaries go only where the negative space is at least this far from any element or wall (canonical units; 0: max(gap, L / 4), L the nominal secondary size)"},
       {"secondary-separation", field(&O::secondary, &P::separation), "d_sep: secondary seeds keep at least this far apart (canonical units; 0: L, the nominal secondary size)"},

@@ -15,7 +15,7 @@
 #include "pak/geom/clipping.hpp"
 #include "pak/geom/closest_point.hpp"
 #include "pak/geom/resample.hpp"
-#include "repulsion/containers.hpp"
+#include "sim/packing_setup.hpp"
 
 namespace pak {
 namespace {
@@ -100,8 +100,7 @@ struct Placement {
 class FlowPacker {
  public:
   FlowPacker(const Scene& scene, const Library& library, const FlowOptions& options, const FlowCallbacks& callbacks)
-      : scene_(scene), options_(options), callbacks_(callbacks), containers_(sceneContainers(scene, library)),
-        types_(containers_.combined.empty() ? library : containers_.combined) {}
+      : scene_(scene), library_(library), options_(options), callbacks_(callbacks) {}
 
   FlowPacking run();
 
@@ -119,10 +118,11 @@ class FlowPacker {
   double totalArea() const;
 
   const Scene& scene_;
+  const Library& library_;
   FlowOptions options_;
   const FlowCallbacks& callbacks_;
-  SceneContainers containers_;
-  const Library& types_;
+  PackingSetup setup_;              // the frame, the separate containers and the fixed art
+  const Library* types_ = nullptr;  // every library the containers use
   std::vector<FlowPrototype> prototypes_;
   double unit_ = 1.0;  // input units per canonical unit
   Region freeShrunk_;  // free space inset by spacing / 2: where element art may go
@@ -149,11 +149,14 @@ FlowPacking FlowPacker::run() {
 }
 
 void FlowPacker::setUp() {
-  if (types_.empty()) throw InputError("--elements", "the element library is empty");
-  Box box = bounds(scene_.container);
-  for (const Shape& s : scene_.fixed) box.add(bounds(s));
-  const double lCanvas = std::max(box.width(), box.height());
-  if (!(lCanvas > 0.0)) throw InputError(scene_.source, "the containers have no extent");
+  // l_canvas (3.3.1) spans the containers and the fixed elements; FLOWPAK works in input
+  // units, its canonical distances scaled by l_canvas / 1000.
+  // Its booleans all run at Clipper's default precision.
+  setup_ = preparePacking(scene_, library_, {.frameSpansFixed = true, .clip = ClipOptions{}});
+  types_ = &setup_.types(library_);
+  if (types_->empty()) throw InputError("--elements", "the element library is empty");
+  const Box box = setup_.frameBox;
+  const double lCanvas = setup_.side;
   unit_ = lCanvas / 1000.0;
   packing_.canonicalScale = 1.0 / unit_;
   // Distances in input units from here on.
@@ -161,23 +164,21 @@ void FlowPacker::setUp() {
                     &options_.spacing, &options_.growthLimit, &options_.fillGapsInset})
     *d *= unit_;
 
-  std::vector<Region> regions = containers_.regions;
+  std::vector<Region> regions = setup_.containers.regions;
   if (options_.mirrorX) {
     Box left = box;
     left.min -= Vec2{1.0, 1.0} * lCanvas;
     left.max = {*options_.mirrorX, box.max.y + lCanvas};
     for (Region& r : regions) r = intersect(r, rectangle(left));
   }
-  std::vector<Region> fixed;
-  for (const Shape& s : scene_.fixed) fixed.push_back(paintedRegion(s));
-  packing_.fixedArt = unite(fixed);
+  packing_.fixedArt = setup_.fixedPainted;
   packing_.containers = regions;
   packing_.container = unite(regions);
   packing_.freeSpace = subtract(packing_.container, packing_.fixedArt);
   if (area(packing_.freeSpace) <= 0.0) throw InputError(scene_.source, "the fixed elements leave no free space");
   freeShrunk_ = options_.spacing > 0.0 ? offset(packing_.freeSpace, -0.5 * options_.spacing) : packing_.freeSpace;
 
-  for (const ElementArt& e : types_) prototypes_.push_back(flowPrototype(e, options_.maxRotationDegrees, options_.lrSamples));
+  for (const ElementArt& e : *types_) prototypes_.push_back(flowPrototype(e, options_.maxRotationDegrees, options_.lrSamples));
 }
 
 void FlowPacker::report(const std::string& phase, int iteration) {
@@ -309,7 +310,7 @@ Placement FlowPacker::place(const FlowElement& e, const Region& spaceAll, const 
                                                0.25 * options_.sampleSpacing);
   if (spine.size() < 2 || polylineLength(spine) < 0.25 * options_.minLength) return best;
   LRFunction blobLR = blobLRFunction(space, spine, options_.lrSamples);
-  const std::vector<int>& types = containers_.typesOf[static_cast<std::size_t>(e.container)];
+  const std::vector<int>& types = setup_.containers.typesOf[static_cast<std::size_t>(e.container)];
   std::vector<LRFunction> candidates;
   std::vector<std::pair<int, int>> which;  // (type, rotation)
   for (int type : types) {
@@ -473,7 +474,7 @@ void FlowPacker::mirror() {
     }
   }
   // The container as the artist drew it: both halves.
-  packing_.containers = containers_.regions;
+  packing_.containers = setup_.containers.regions;
   packing_.container = scene_.container;
   packing_.freeSpace = subtract(packing_.container, packing_.fixedArt);
 }

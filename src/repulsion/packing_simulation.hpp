@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "pak/repulsion/orientation.hpp"
-#include "pak/sim/simulation_parameters.hpp"
 #include "pak/sim/element_mesh.hpp"
+#include "pak/sim/simulation_parameters.hpp"
 #include "sim/explicit_euler.hpp"
 #include "sim/growth_rule.hpp"
 #include "sim/nearest_hits.hpp"

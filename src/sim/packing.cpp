@@ -10,6 +10,7 @@ const char* toString(StopReason reason) {
     case StopReason::TargetFill: return "target-fill";
     case StopReason::Stalled: return "stalled";
     case StopReason::IterationCap: return "iteration-cap";
+    case StopReason::TimeLimit: return "time-limit";
   }
   return "?";
 }

@@ -1,6 +1,7 @@
 // Several containers, holes, per-container libraries and a previous packing's elements as
 // containers (issue 5 items 3 and 6b; thesis Figures 4.10 and 4.12b).
-#include "repulsion/containers.hpp"
+#include "repulsion/container_seeding.hpp"
+#include "sim/scene_containers.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 #include "repulsion/mesh_fixtures.hpp"
-#include "repulsion/thesis_parameters.hpp"
 #include "repulsion/packing_simulation.hpp"
+#include "repulsion/thesis_parameters.hpp"
 
 #include <gtest/gtest.h>
 

@@ -14,8 +14,8 @@
 #include "pak/io/tile_drawing.hpp"
 #include "pak/repulsion/repulsion.hpp"
 #include "repulsion/mesh_fixtures.hpp"
-#include "repulsion/thesis_parameters.hpp"
 #include "repulsion/packing_simulation.hpp"
+#include "repulsion/thesis_parameters.hpp"
 
 using namespace pak;
 

@@ -46,7 +46,7 @@ struct AnimationCallbacks {
   int checkpointEvery = 0;       // 0: never
 };
 
-enum class AnimationStop { AllTouching, GrowthCap, Stalled, IterationCap };
+enum class AnimationStop { AllTouching, GrowthCap, Stalled, IterationCap, TimeLimit };
 const char* toString(AnimationStop reason);
 
 struct AnimatedElement {

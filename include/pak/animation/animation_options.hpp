@@ -16,6 +16,7 @@ struct AnimationStopRule {
   double stallGrowth = 0.005;
   int stallWindow = 100;
   int maxIterations = 3000;
+  double timeLimit = 0.0;  // seconds of wall time from the start of the run; 0: none
 };
 
 struct AnimationOptions {

@@ -17,6 +17,7 @@ struct RepulsionStopRule {
   // moves only by growth; true, the measured skin area as in the thesis (jitters more).
   bool stallOnMeasuredArea = false;
   int maxIterations = 30000;
+  double timeLimit = 0.0;    // seconds of wall time from the start of the run; 0: none
 };
 
 // Secondary elements (4.6), packed when a secondary library is given.

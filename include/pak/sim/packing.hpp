@@ -27,7 +27,8 @@ struct PlacedElement {
   int container = 0;        // index into Packing::containers: the one it was seeded in
 };
 
-enum class StopReason { TargetFill, Stalled, IterationCap };
+// TimeLimit: the run ran out of --time-limit (the one stop that depends on the machine).
+enum class StopReason { TargetFill, Stalled, IterationCap, TimeLimit };
 const char* toString(StopReason reason);
 
 // One simulation pass: the primary one, then the secondary one when it runs (4.6).

@@ -1,25 +1,14 @@
 #pragma once
-// Several separate containers (issue 5 item 3; thesis Figure 4.10, 4.12b): how many seeds
-// each gets, and seeding each with its own element types.
+// Seeding several separate containers (thesis Figure 4.10, 4.12b): how many seeds each gets,
+// and seeding each with its own element types (sim/scene_containers.hpp finds them).
 #include <cstdint>
 #include <vector>
 
 #include "pak/geom/polygon.hpp"
-#include "pak/geom/scene.hpp"
 #include "repulsion/seeding.hpp"
 #include "sim/region_index.hpp"
 
 namespace pak {
-
-// The scene's separate containers and the element types each is filled with.
-struct SceneContainers {
-  std::vector<Region> regions;  // input coordinates: Scene::containers, else each polygon
-  // Every library in use (the containers' own, the run's), in order of first use; empty when
-  // that is just the run's library, which is then the element types as it is.
-  Library combined;
-  std::vector<std::vector<int>> typesOf;  // per container: its element types
-};
-SceneContainers sceneContainers(const Scene& scene, const Library& library);
 
 // Seeds per container, proportional to area (largest remainders), summing to `count`; a
 // container of at least `minimumArea` gets one even when its share rounds to 0 (so the total

@@ -1,0 +1,390 @@
+// AnimationPak, phase by phase (see animation_phases.hpp).
+#include "animation/animation_phases.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <optional>
+
+#include "animation/element_animator.hpp"
+#include "pak/error.hpp"
+#include "pak/geom/blue_noise.hpp"
+#include "pak/geom/rng.hpp"
+#include "sim/canonical_frame.hpp"
+#include "sim/deadline.hpp"
+#include "sim/simulation_loop.hpp"
+#include "sim/stall_window.hpp"
+
+namespace pak {
+namespace {
+
+// Each error names the option as `pak animate` spells it (the flag is also the --config key).
+void checkOptions(const AnimationOptions& o, int slices) {
+  auto positive = [](double v, const char* option) {
+    if (!(v > 0.0) || !std::isfinite(v)) throw InputError(option, "must be a positive number");
+  };
+  auto nonNegative = [](double v, const char* option) {
+    if (!(v >= 0.0) || !std::isfinite(v)) throw InputError(option, "must be a non-negative number");
+  };
+  if (slices < 2 || slices > 1000) throw InputError("--slices", "must be between 2 and 1000");
+  if (!(o.elementArea >= 0.0 && o.elementArea <= 1.0)) throw InputError("--element-area", "must be in [0, 1]");
+  positive(o.gap, "--gap");
+  nonNegative(o.meshSpacing, "--mesh-spacing");
+  if (!(o.initialScale > 0.0 && o.initialScale <= 1.0)) throw InputError("--initial-scale", "must be in (0, 1]");
+  checkSimulationParameters(o.simulation);
+  positive(o.simulation.cellSize, "--cell-size");  // the exact repulsion reach: no packer default
+  const SpacetimeParameters& p = o.spacetime;
+  nonNegative(p.timeStrength, "--time-springs");
+  nonNegative(p.targetStrength, "--target");
+  nonNegative(p.temporalStrength, "--temporal");
+  positive(p.maxGrowth, "--max-growth");
+  positive(p.timeLength, "--time-length");
+  positive(o.stop.closeness, "--closeness");
+  nonNegative(o.stop.stallGrowth, "--stall-growth");
+  if (o.stop.stallWindow < 1) throw InputError("--stall-window", "must be at least 1");
+  if (o.stop.maxIterations < 0) throw InputError("--max-iterations", "must not be negative");
+  nonNegative(o.stop.timeLimit, "--time-limit");
+}
+
+double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
+
+// Linear interpolation of the guided targets at t (5.4): position, and scale and rotation
+// where targets give them.
+struct GuidePose { Vec2 position; double scale = 1.0; double rotation = 0.0; };
+GuidePose guidePose(const std::vector<GuideTarget>& targets, const CanonicalFrame& frame, double t) {
+  std::size_t k = 1;
+  while (k + 1 < targets.size() && targets[k].t < t) ++k;
+  const GuideTarget& a = targets[k - 1];
+  const GuideTarget& b = targets[k];
+  const double w = b.t > a.t ? std::clamp((t - a.t) / (b.t - a.t), 0.0, 1.0) : 0.0;
+  auto channel = [&](auto get, double fallback) {
+    // The nearest targets that give the value, on each side.
+    double before = fallback, after = fallback, tb = 0.0, ta = 1.0;
+    bool haveBefore = false, haveAfter = false;
+    for (const GuideTarget& g : targets) {
+      std::optional<double> v = get(g);
+      if (!v) continue;
+      if (g.t <= t) before = *v, tb = g.t, haveBefore = true;
+      if (g.t >= t && !haveAfter) after = *v, ta = g.t, haveAfter = true;
+    }
+    if (!haveBefore) return haveAfter ? after : fallback;
+    if (!haveAfter || ta <= tb) return before;
+    return before + (after - before) * (t - tb) / (ta - tb);
+  };
+  GuidePose pose;
+  pose.position = frame.toCanonical(a.position + (b.position - a.position) * w);
+  pose.scale = channel([](const GuideTarget& g) { return g.scale; }, 1.0);
+  pose.rotation = channel([](const GuideTarget& g) { return g.rotation; }, 0.0);
+  return pose;
+}
+
+Vec2 rotate(Vec2 p, double angle) { return rotated(p, angle); }
+
+}  // namespace
+
+AnimationRun prepareAnimation(const Scene& scene, const Library& library, const AnimationScript& script,
+                              const AnimationOptions& options) {
+  const int slices = options.slices > 0 ? options.slices : script.slices;
+  checkOptions(options, slices);
+  if (script.elements.empty()) throw InputError(script.source, "the animation has no elements");
+  if (library.size() != script.elements.size())
+    throw InputError(script.source, "one element art per animation element is needed");
+  // Fixed elements are drawn with the frames but are no obstacles yet.
+  AnimationRun run{scene, script, options, slices, preparePacking(scene, library, {})};
+  run.started = std::chrono::steady_clock::now();
+  indexContainers(run.setup, 10.0);
+  const double containerArea = run.setup.containerArea;
+
+  int total = 0;
+  for (const AnimatedElementSpec& spec : script.elements) total += spec.count;
+  const double nominalArea = (options.elementArea > 0.0 ? options.elementArea : 1.0 / total) * containerArea;
+  const double nominalSize = std::sqrt(nominalArea);
+  const double gap = options.gap * nominalSize;
+  const double spacing = options.meshSpacing > 0.0 ? options.meshSpacing : nominalSize / 4.0;
+  const double scale = librarySkinScale(library, nominalArea, gap);
+
+  std::map<std::string, int> meshOfSource;
+  run.types.resize(script.elements.size());
+  const double dtSlice = 1.0 / (slices - 1);
+  for (std::size_t i = 0; i < script.elements.size(); ++i) {
+    const ElementArt& art = library[i];
+    AnimatedType& type = run.types[i];
+    type.spec = &script.elements[i];
+    type.source = art.source;
+    auto [it, fresh] = meshOfSource.try_emplace(art.source, static_cast<int>(run.meshes.size()));
+    if (fresh) {
+      ElementMeshOptions meshOptions;
+      meshOptions.gap = gap;
+      meshOptions.spacing = spacing;
+      meshOptions.seed = options.run.seed * 7919 + run.meshes.size();
+      run.meshes.push_back(prepareElement(art, scale, meshOptions));
+    }
+    type.mesh = it->second;
+    try {
+      ElementAnimator animator(run.meshes[type.mesh].mesh.mesh, art.handles, type.spec->animation, centroid(art.outline),
+                               scale, script.loop);
+      type.shapes.resize(slices);
+      for (int s = 0; s < slices; ++s) {
+        animator.shapeAt(s * dtSlice, type.shapes[s]);
+        for (Vec2 p : type.shapes[s]) type.radius = std::max(type.radius, length(p));
+      }
+    } catch (const InputError& error) {
+      throw InputError(art.source, std::string("element '") + type.spec->id + "': " + error.what());
+    }
+  }
+  return run;
+}
+
+AnimationSeeding seedAnimation(const AnimationRun& run) {
+  const AnimationOptions& options = run.options;
+  const CanonicalFrame& frame = run.setup.frame;
+  const std::vector<AnimatedType>& types = run.types;
+  const int slices = run.slices;
+  const double dtSlice = 1.0 / (slices - 1);
+  AnimationSeeding seeding;
+  std::vector<AnimatedInstance>& instances = seeding.instances;
+  seeding.guidedInstance.assign(types.size(), -1);
+
+  // Guided elements along their targets, then blue-noise seeds for the others, away from the
+  // guided tubes; everything shrunk to fit.
+  Rng rng(options.run.seed);
+  double largestRadius = 0.0;
+  for (const AnimatedType& type : types) largestRadius = std::max(largestRadius, type.radius);
+  for (std::size_t i = 0; i < types.size(); ++i) {
+    const AnimatedType& type = types[i];
+    if (type.spec->targets.empty()) continue;
+    const ElementMesh& mesh = run.meshes[type.mesh].mesh;
+    int anchor = 0;  // the vertex nearest the centroid (the mesh is centred on it)
+    for (std::size_t v = 1; v < mesh.mesh.vertices.size(); ++v)
+      if (length(mesh.mesh.vertices[v]) < length(mesh.mesh.vertices[anchor])) anchor = static_cast<int>(v);
+    AnimatedInstance instance;
+    instance.type = static_cast<int>(i);
+    for (int s = 0; s < slices; ++s) {
+      const GuidePose pose = guidePose(type.spec->targets, frame, s * dtSlice);
+      const std::vector<Vec2>& shape = type.shapes[s];
+      Vec2 sum;
+      for (Vec2 p : shape) {
+        const Vec2 q = pose.position + rotate(p - shape[anchor], -radians(pose.rotation)) * pose.scale;
+        instance.reference.push_back(q);
+        sum += q;
+      }
+      instance.centre.push_back(sum / static_cast<double>(shape.size()));
+    }
+    for (const GuideTarget& target : type.spec->targets) {
+      const int s = static_cast<int>(std::lround(target.t * (slices - 1)));
+      instance.targets.push_back({s, anchor, frame.toCanonical(target.position)});
+    }
+    seeding.guidedInstance[i] = static_cast<int>(instances.size());
+    instances.push_back(std::move(instance));
+  }
+  const int guidedCount = static_cast<int>(instances.size());
+
+  std::vector<int> unguided;  // type of each unguided copy, in a random order
+  for (std::size_t i = 0; i < types.size(); ++i)
+    if (types[i].spec->targets.empty())
+      for (int c = 0; c < types[i].spec->count; ++c) unguided.push_back(static_cast<int>(i));
+  for (std::size_t k = unguided.size(); k > 1; --k) std::swap(unguided[k - 1], unguided[rng.below(k)]);
+
+  // Seeds r apart hold elements of radius ≤ 0.45 r without overlap; shrink r until enough
+  // seeds clear the guided tubes.
+  seeding.growth = options.initialScale;
+  std::vector<Vec2> seeds;
+  if (!unguided.empty()) {
+    double r = std::sqrt(run.setup.containerArea / (0.866 * unguided.size()));
+    for (int attempt = 0; attempt < 40; ++attempt, r *= 0.9) {
+      BlueNoiseOptions noise;
+      noise.radius = r;
+      noise.boundaryMargin = 0.5 * r;
+      noise.seed = options.run.seed * 31 + attempt;
+      const double g = std::min(options.initialScale, 0.45 * r / largestRadius);
+      seeds.clear();
+      for (Vec2 p : blueNoiseSample(run.setup.container, noise)) {
+        bool clear = true;
+        for (int gi = 0; gi < guidedCount && clear; ++gi) {
+          const AnimatedInstance& guided = instances[gi];
+          const double reach = (types[guided.type].radius + largestRadius) * g * 1.2;
+          for (int s = 0; s < slices && clear; ++s) clear = distance(p, guided.centre[s]) > reach;
+        }
+        if (clear) seeds.push_back(p);
+      }
+      if (seeds.size() >= unguided.size()) {
+        seeding.growth = g;
+        break;
+      }
+    }
+    if (seeds.size() < unguided.size())
+      throw InputError(run.scene.source, "the container has no room to seed " + std::to_string(unguided.size()) + " elements");
+    for (std::size_t k = seeds.size(); k > 1; --k) std::swap(seeds[k - 1], seeds[rng.below(k)]);
+  }
+  std::vector<int> copies(types.size(), 0);
+  for (std::size_t k = 0; k < unguided.size(); ++k) {
+    const AnimatedType& type = types[unguided[k]];
+    AnimatedInstance instance;
+    instance.type = unguided[k];
+    instance.copy = copies[unguided[k]]++;
+    const double angle = type.spec->orientation ? -radians(*type.spec->orientation) : rng.uniform(0.0, 2.0 * std::numbers::pi);
+    for (int s = 0; s < slices; ++s) {
+      Vec2 sum;
+      for (Vec2 p : type.shapes[s]) {
+        const Vec2 q = seeds[k] + rotate(p, angle);
+        instance.reference.push_back(q);
+        sum += q;
+      }
+      instance.centre.push_back(sum / static_cast<double>(type.shapes[s].size()));
+    }
+    instances.push_back(std::move(instance));
+  }
+  return seeding;
+}
+
+SpacetimeSimulation spacetimeSimulation(const AnimationRun& run, const AnimationSeeding& seeding, ThreadPool& pool,
+                                        const AnimationState* resumeFrom) {
+  const AnimationOptions& options = run.options;
+  const std::vector<AnimatedType>& types = run.types;
+  const std::vector<AnimatedInstance>& instances = seeding.instances;
+  const AnimationScript& script = run.script;
+  const int slices = run.slices;
+  SpacetimeSimulation sim(run.setup.containerIndex, run.setup.containerArea, slices, options.simulation, options.spacetime,
+                          pool);
+  for (const AnimatedInstance& instance : instances) {
+    const AnimatedType& type = types[instance.type];
+    SpacetimeElementSetup setup;
+    setup.mesh = &run.meshes[type.mesh].mesh;
+    setup.reference = instance.reference;
+    setup.referenceCentre = instance.centre;
+    setup.initialGrowth = seeding.growth;
+    setup.torsionStrength = type.spec->orientation ? options.simulation.torsionStrength : 0.0;
+    setup.targets = instance.targets;
+    sim.addElement(setup);
+  }
+  if (script.loop) {
+    for (std::size_t e = 0; e < instances.size(); ++e) {
+      const AnimatedType& type = types[instances[e].type];
+      int to = static_cast<int>(e);
+      if (!type.spec->loopTo.empty()) {
+        bool found = false;
+        for (std::size_t i = 0; i < types.size(); ++i)
+          if (types[i].spec->id == type.spec->loopTo && seeding.guidedInstance[i] >= 0)
+            to = seeding.guidedInstance[i], found = true;
+        if (!found)
+          throw InputError(script.source, "element '" + type.spec->id + "' loops to '" + type.spec->loopTo +
+                                              "', which is not a guided element; loop_to joins guided elements");
+      }
+      const AnimatedType& toType = types[instances[to].type];
+      if (toType.mesh != type.mesh)
+        throw InputError(script.source, "element '" + type.spec->id + "' loops to '" + toType.spec->id +
+                                            "', drawn from another SVG; a loop joins copies of one drawing");
+      const int n = static_cast<int>(run.meshes[type.mesh].mesh.mesh.vertices.size());
+      sim.addLoop(static_cast<int>(e), to,
+                  SpacetimeSimulation::loopTurn(instances[to].reference.data(),
+                                                instances[e].reference.data() + (slices - 1) * n, n));
+    }
+  }
+  sim.finalize(Box{{0.0, 0.0}, {kCanonicalSide, kCanonicalSide}});
+  if (resumeFrom) {
+    if (resumeFrom->positions.size() != sim.vertexCount() || resumeFrom->growth.size() != sim.growth().size() ||
+        resumeFrom->velocities.size() != sim.vertexCount())
+      throw InputError("--resume", "the checkpoint was made for other inputs or options (its sizes do not match)");
+    sim.restoreState(resumeFrom->iteration, resumeFrom->positions, resumeFrom->velocities, resumeFrom->growth);
+  }
+  return sim;
+}
+
+AnimationStop simulateAnimation(SpacetimeSimulation& sim, const AnimationRun& run, const AnimationCallbacks& callbacks,
+                                const AnimationState* resumeFrom) {
+  const AnimationOptions& options = run.options;
+  auto progress = [&] {
+    AnimationProgress p;
+    p.iteration = sim.iteration();
+    p.fill = sim.fill();
+    p.growingSlices = sim.growingSlices();
+    p.overlappingSlices = sim.overlappingSlices();
+    p.slices = static_cast<int>(sim.growth().size());
+    p.largestSliceGap = sim.largestSliceGap();
+    p.minGrowth = sim.minGrowth();
+    return p;
+  };
+  // Mean growth of the last stallWindow + 1 iterations, by iteration number; checkpoints keep
+  // it, so a resumed run stops where the uninterrupted one does.
+  StallWindow meanGrowth(options.stop.stallWindow);
+  if (resumeFrom && !resumeFrom->recentMeanGrowth.empty()) {
+    if (resumeFrom->recentMeanGrowth.size() != meanGrowth.values().size())
+      throw InputError("--resume", "the checkpoint was made with another --stall-window");
+    if (resumeFrom->recorded > resumeFrom->iteration)
+      throw InputError("--resume", "the checkpoint is damaged (it recorded more iterations than it ran)");
+    meanGrowth.restore(resumeFrom->recentMeanGrowth, resumeFrom->recorded, resumeFrom->iteration);
+  }
+  auto state = [&] {
+    return AnimationState{sim.iteration(), sim.positions(), sim.velocities(), sim.growth(), meanGrowth.values(),
+                          meanGrowth.recorded()};
+  };
+  const Deadline deadline(run.started, options.stop.timeLimit);
+  const std::optional<AnimationStop> stop = runUntilStopped<AnimationStop>(
+      sim, options.stop.maxIterations, meanGrowth,
+      [&] {
+        double mean = 0.0;
+        for (double g : sim.growth()) mean += g;
+        return mean / static_cast<double>(sim.growth().size());
+      },
+      [&](int it) {
+        if (callbacks.onCheckpoint && callbacks.checkpointEvery > 0 && it % callbacks.checkpointEvery == 0)
+          callbacks.onCheckpoint(state());
+        if (callbacks.onProgress && callbacks.progressEvery > 0 && it % callbacks.progressEvery == 0)
+          callbacks.onProgress(progress());
+      },
+      [&](const StallWindow& window) -> std::optional<AnimationStop> {
+        if (sim.largestSliceGap() < options.stop.closeness) return AnimationStop::AllTouching;
+        if (sim.minGrowth() >= options.spacetime.maxGrowth) return AnimationStop::GrowthCap;
+        if (window.full() && window.rise() < options.stop.stallGrowth) return AnimationStop::Stalled;
+        if (deadline.passed()) return AnimationStop::TimeLimit;
+        return std::nullopt;
+      });
+  if (callbacks.onProgress) callbacks.onProgress(progress());
+  sim.projectInside();  // after any checkpoint: a resumed run projects the same state
+  return stop.value_or(AnimationStop::IterationCap);
+}
+
+AnimatedPacking collectAnimation(const AnimationRun& run, const AnimationSeeding& seeding, const SpacetimeSimulation& sim,
+                                 AnimationStop stop, const ThreadPool& pool) {
+  const CanonicalFrame& frame = run.setup.frame;
+  const int slices = run.slices;
+  AnimatedPacking result;
+  result.stopReason = stop;
+  for (std::size_t e = 0; e < seeding.instances.size(); ++e) {
+    const AnimatedType& type = run.types[seeding.instances[e].type];
+    const PreparedElement& shared = run.meshes[type.mesh];
+    AnimatedElement out;
+    out.id = type.spec->id;
+    out.source = type.source;
+    out.copy = seeding.instances[e].copy;
+    out.guided = !type.spec->targets.empty();
+    out.mesh = shared.mesh;
+    out.art = shared.art;
+    out.restSkinArea = shared.mesh.skinArea;
+    const int n = sim.verticesPerSlice(static_cast<int>(e));
+    const int begin = sim.vertexBegin(static_cast<int>(e));
+    for (int s = 0; s < slices; ++s) {
+      std::vector<Vec2> vertices(n);
+      for (int v = 0; v < n; ++v) vertices[v] = frame.toInput(spatial(sim.positions()[begin + s * n + v]));
+      out.slices.push_back(std::move(vertices));
+      out.sliceTimes.push_back(sim.positions()[begin + s * n].t / run.options.spacetime.timeLength);
+      out.sliceGrowth.push_back(sim.growth()[e * slices + s]);
+    }
+    result.elements.push_back(std::move(out));
+  }
+  result.container = run.scene.container;
+  result.canonicalScale = frame.scale;
+  result.iterations = sim.iteration();
+  result.fill = sim.fill();
+  result.overlappingSlices = sim.overlappingSlices();
+  result.vertices = sim.vertexCount();
+  result.springs = sim.springCount();
+  result.envelopeTriangles = sim.envelopeTriangleCount();
+  result.slices = slices;
+  result.threads = pool.threadCount();
+  result.seed = run.options.run.seed;
+  return result;
+}
+
+}  // namespace pak

@@ -1,0 +1,310 @@
+// RepulsionPak's primary pass, phase by phase (see repulsion_phases.hpp).
+#include "repulsion/repulsion_phases.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "pak/error.hpp"
+#include "pak/geom/clipping.hpp"
+#include "pak/geom/verify.hpp"
+#include "pak/repulsion/tiling.hpp"
+#include "repulsion/container_seeding.hpp"
+#include "sim/deadline.hpp"
+#include "sim/simulation_loop.hpp"
+#include "sim/stall_window.hpp"
+
+namespace pak {
+namespace {
+
+// Each error names the option as `pak pack` spells it (the flag is also the --config key).
+void checkOptions(const RepulsionOptions& o) {
+  auto positive = [](double v, const char* option) {
+    if (!(v > 0.0) || !std::isfinite(v)) throw InputError(option, "must be a positive number");
+  };
+  auto nonNegative = [](double v, const char* option) {
+    if (!(v >= 0.0) || !std::isfinite(v)) throw InputError(option, "must be a non-negative number");
+  };
+  positive(o.gap, "--gap");
+  nonNegative(o.meshSpacing, "--mesh-spacing");
+  if (o.count < 0) throw InputError("--count", "must not be negative");
+  if (o.count > 100000) throw InputError("--count", std::to_string(o.count) + " is absurdly large");
+  positive(o.elementArea, "--element-area");
+  positive(o.initialCoverage, "--initial-coverage");
+  checkSimulationParameters(o.simulation);
+  positive(o.stop.targetFill, "--target-fill");
+  if (o.stop.stallWindow < 1) throw InputError("--stall-window", "must be at least 1");
+  nonNegative(o.stop.stallEpsilon, "--stall-epsilon");
+  if (o.stop.maxIterations < 0) throw InputError("--max-iterations", "must not be negative");
+  nonNegative(o.stop.timeLimit, "--time-limit");
+  if (!(o.secondary.scale > 0.0 && o.secondary.scale <= 10.0)) throw InputError("--secondary-scale", "must be in (0, 10]");
+  nonNegative(o.secondary.minDistance, "--secondary-min-distance");
+  nonNegative(o.secondary.separation, "--secondary-separation");
+  if (o.secondary.resolution < 16 || o.secondary.resolution > 8000)
+    throw InputError("--secondary-resolution", "must be between 16 and 8000 cells");
+  positive(o.secondary.targetFill, "--secondary-target-fill");
+  nonNegative(o.shapeMatching.dockingStrength, "--docking-strength");
+  if (o.tiling.size != Vec2{} && !isTiled(o.tiling.size)) throw InputError("--tile", "must be two positive numbers W,H");
+  if (o.shapeMatching.enabled && isTiled(o.tiling.size))
+    throw InputError("--shape-matching", "needs container corners; a tile has none");
+  if (o.orientation.field.axis != 'x' && o.orientation.field.axis != 'y')
+    throw InputError("--orientation-field", "the axis must be x or y");
+  if (!std::isfinite(o.orientation.field.fromDegrees) || !std::isfinite(o.orientation.field.toDegrees))
+    throw InputError("--orientation-field", "the angles must be finite");
+  nonNegative(o.orientation.torsion, "--orientation-torsion");
+}
+
+// The simulation's constants as the run resolves them: a cell size of 0 asks for
+// 2 × mesh spacing, and a preferred orientation without --k-torsion pulls with its own k_tor.
+SimulationParameters resolvedParameters(const RepulsionOptions& options, double spacing) {
+  SimulationParameters parameters = options.simulation;
+  if (parameters.cellSize == 0.0) parameters.cellSize = 2.0 * spacing;
+  if (options.orientation.mode != OrientationMode::Random && parameters.torsionStrength == 0.0)
+    parameters.torsionStrength = options.orientation.torsion;
+  return parameters;
+}
+
+// Skins of the seeded meshes at growth g: overlap-free and inside their containers?
+bool seedingIsClear(const RepulsionRun& run, const std::vector<Seed>& seeds, double g) {
+  std::vector<Region> skins;
+  std::vector<Box> boxes;
+  const bool tiled = isTiled(run.period);
+  for (const Seed& s : seeds) {
+    const ElementMesh& mesh = run.types[s.type].mesh;
+    Ring ring;
+    for (int k = 0; k < mesh.boundaryCount; ++k) {
+      Vec2 p = s.position + rotated(mesh.mesh.vertices[k] - mesh.restCentroid, s.angle) * g;
+      if (!tiled && !run.setup.partIndex(s.container).query(p, false).inside) return false;  // a tile has no walls
+      ring.push_back(p);
+    }
+    boxes.push_back(bounds(ring));
+    skins.push_back(Region{Polygon{std::move(ring), {}}});
+  }
+  for (std::size_t i = 0; i < skins.size(); ++i)
+    for (std::size_t j = i + 1; j < skins.size(); ++j)
+      if (boxes[i].overlaps(boxes[j]) && area(intersect(skins[i], skins[j])) > 0.0) return false;
+  return !tiled || !clonesOverlap(skins, run.period);
+}
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+RepulsionRun prepareRepulsion(const Scene& scene, const Library& library, const RepulsionOptions& options) {
+  checkOptions(options);
+  if (library.empty()) throw InputError("--elements", "no elements to pack");
+  RepulsionRun run{scene, options, preparePacking(scene, library, {.obstacleMargin = 0.5 * options.gap})};
+  run.started = std::chrono::steady_clock::now();
+  const PackingSetup& setup = run.setup;
+  if (!setup.fixedPainted.empty()) run.fixedArt = intersect(setup.fixedPainted, scene.container, setup.clip);
+  run.count = options.count > 0 ? options.count : std::max(1, static_cast<int>(std::lround(1.0 / options.elementArea)));
+  run.nominalSkinArea = setup.containerArea / run.count;
+  run.spacing = options.meshSpacing > 0.0 ? options.meshSpacing
+                                          : std::max(options.gap, std::sqrt(run.nominalSkinArea) / 10.0);
+  indexContainers(run.setup, std::max(run.spacing, 5.0));
+
+  // Every library the containers use, scaled alike so the mean skin has the nominal area.
+  const Library& types = setup.types(library);
+  const double scale = librarySkinScale(types, run.nominalSkinArea, options.gap);
+  ElementMeshOptions meshOptions;
+  meshOptions.gap = options.gap;
+  meshOptions.spacing = run.spacing;
+  for (std::size_t i = 0; i < types.size(); ++i) {
+    meshOptions.seed = options.run.seed * 7919 + i;
+    run.types.push_back(prepareElement(types[i], scale, meshOptions));
+  }
+
+  run.period = isTiled(options.tiling.size) ? options.tiling.size * setup.frame.scale : Vec2{};
+  if (options.orientation.mode == OrientationMode::Field)
+    run.ramp = OrientationRamp::over(options.orientation.field, bounds(setup.container).min, bounds(setup.container).max);
+  run.parameters = resolvedParameters(options, run.spacing);
+  run.domain = {.occupiedArea = setup.blockedArea, .period = run.period};
+  run.simulationArea = bounds(setup.container);
+  const Vec2 margin{0.1 * kCanonicalSide, 0.1 * kCanonicalSide};
+  run.simulationArea.add(run.simulationArea.min - margin);
+  run.simulationArea.add(run.simulationArea.max + margin);
+  return run;
+}
+
+Seeding seedPrimaries(const RepulsionRun& run) {
+  const PackingSetup& setup = run.setup;
+  std::vector<ContainerSeeding> partSeeding;
+  const std::vector<int> partCounts = seedsPerContainer(setup.partAreas, run.count, 0.5 * run.nominalSkinArea);
+  for (std::size_t c = 0; c < setup.parts.size(); ++c)
+    partSeeding.push_back({&setup.parts[c], &setup.partIndex(c), partCounts[c], setup.containers.typesOf[c]});
+  Seeding seeding;
+  seeding.seeds = seedContainers(partSeeding, run.options.run.seed, run.period);
+  if (seeding.seeds.empty()) throw InputError(run.scene.source, "container too small to seed any element");
+  // Preferred orientation: seeded at the angle the torsion will hold (eq. 4.6).
+  if (run.options.orientation.mode != OrientationMode::Random)
+    for (Seed& s : seeding.seeds) s.angle = run.ramp.active ? run.ramp.angleAt(s.position) : 0.0;
+  // Shape matching (4.7): elements that fit the salient corners take the nearest seeds.
+  if (run.options.shapeMatching.enabled) {
+    const auto start = std::chrono::steady_clock::now();
+    std::vector<const ElementMesh*> meshes;
+    std::vector<const Region*> outlines;
+    for (const PreparedElement& t : run.types) {
+      meshes.push_back(&t.mesh);
+      outlines.push_back(&t.outline);
+    }
+    seeding.docking.emplace(setup.container, meshes, outlines, run.options.gap, seeding.seeds);
+    seeding.matchingSeconds = secondsSince(start);
+  }
+  return seeding;
+}
+
+void shrinkSeeds(const RepulsionRun& run, Seeding& seeding) {
+  std::vector<Seed>& seeds = seeding.seeds;
+  double seededSkin = 0.0;
+  for (const Seed& s : seeds) seededSkin += run.types[s.type].mesh.skinArea;
+  double g = std::sqrt(run.options.initialCoverage * run.setup.containerArea / seededSkin);
+  // A docked seed may have moved to another container's corner: it belongs where it now is.
+  auto dock = [&] {
+    if (!seeding.docking) return;
+    seeding.docking->position(g, run.setup.containerIndex, seeds);
+    if (run.setup.severalParts())
+      for (Seed& s : seeds)
+        if (const int c = run.setup.partAt(s.position); c >= 0) s.container = c;
+  };
+  dock();
+  for (int attempt = 0; attempt < 30 && !seedingIsClear(run, seeds, g); ++attempt) {
+    g *= 0.9;
+    dock();
+  }
+  seeding.growth = g;
+}
+
+void setUpContainers(const RepulsionRun& run, PackingSimulation& sim) {
+  const PackingSetup& setup = run.setup;
+  if (setup.severalParts()) {
+    std::vector<PackingSimulation::Corner> corners;
+    for (std::size_t c = 0; c < setup.parts.size(); ++c)
+      for (PackingSimulation::Corner corner : PackingSimulation::reflexCorners(setup.parts[c])) {
+        corner.container = static_cast<int>(c);
+        corners.push_back(corner);
+      }
+    sim.setContainerCorners(std::move(corners));
+    sim.setContainerParts(setup.partIndexPointers());
+  } else {
+    sim.setContainerCorners(PackingSimulation::reflexCorners(setup.container));
+  }
+  if (run.ramp.active) sim.setOrientationField(run.ramp);
+}
+
+PackingSimulation primarySimulation(const RepulsionRun& run, const Seeding& seeding, ThreadPool& pool) {
+  PackingSimulation sim(run.setup.containerIndex, run.setup.containerArea + run.setup.blockedArea, run.parameters, pool,
+                        run.domain);
+  for (const Seed& s : seeding.seeds)
+    sim.meshes()[sim.addMesh(run.types[s.type].mesh, s.type, s.position, s.angle, seeding.growth)].container = s.container;
+  setUpContainers(run, sim);
+  if (seeding.docking) sim.setDocks(seeding.docking->docks(sim), run.options.shapeMatching.dockingStrength);
+  sim.finalize(run.simulationArea);
+  return sim;
+}
+
+StopReason simulate(PackingSimulation& sim, const RepulsionRun& run, const RepulsionStopRule& stop, double targetFill,
+                    int iterationOffset, const RepulsionCallbacks& callbacks,
+                    const std::function<Packing()>& snapshot) {
+  // Eq. 4.7 over a window of the last w + 1 area fractions. The fraction is the meshes' rest
+  // area (see restFill): the measured skin area jitters by more than ε from step to step.
+  StallWindow window(stop.stallWindow);
+  const Deadline deadline(run.started, stop.timeLimit);
+  auto report = [&] {
+    if (!callbacks.onProgress) return;
+    RepulsionProgress progress{iterationOffset + sim.iteration(), sim.fill(), sim.growingCount(),
+                               static_cast<int>(sim.meshes().size())};
+    for (const MeshInstance& m : sim.meshes()) {
+      progress.touchingNeighbours += m.overlapping ? 1 : 0;
+      progress.againstWall += (!m.overlapping && m.outside) ? 1 : 0;
+    }
+    callbacks.onProgress(progress);
+  };
+  const std::optional<StopReason> reason = runUntilStopped<StopReason>(
+      sim, stop.maxIterations, window, [&] { return stop.stallOnMeasuredArea ? sim.fill() : sim.restFill(); },
+      [&](int iteration) {
+        const int total = iterationOffset + iteration;
+        if (callbacks.onProgress && callbacks.progressEvery > 0 && total % callbacks.progressEvery == 0) report();
+        if (callbacks.onSnapshot && callbacks.snapshotEvery > 0 && total % callbacks.snapshotEvery == 0)
+          callbacks.onSnapshot(snapshot());
+      },
+      [&](const StallWindow& w) -> std::optional<StopReason> {
+        if (sim.fill() >= targetFill) return StopReason::TargetFill;
+        if (w.full() && w.rms() < stop.stallEpsilon) return StopReason::Stalled;
+        if (deadline.passed()) return StopReason::TimeLimit;
+        return std::nullopt;
+      });
+  report();
+  return reason.value_or(StopReason::IterationCap);
+}
+
+Packing collectPacking(const RepulsionRun& run, const PackingSimulation& sim, const std::vector<PreparedElement>& types) {
+  const CanonicalFrame& frame = run.setup.frame;
+  Packing packing;
+  packing.container = run.scene.container;
+  packing.canonicalScale = frame.scale;
+  packing.iterations = sim.iteration();
+  packing.skinFill = sim.fill();
+  packing.vertexCount = static_cast<int>(sim.positions().size());
+  packing.springCount = static_cast<int>(sim.springCount());
+  std::vector<Vec2> artPoints;
+  for (const MeshInstance& mesh : sim.meshes()) {
+    const PreparedElement& type = types[mesh.type];
+    const Vec2* vertices = sim.positions().data() + mesh.vertexBegin;
+    replayArt(type.mesh, vertices, artPoints);
+    PlacedElement placed;
+    placed.libraryIndex = mesh.type;
+    placed.source = type.source;
+    placed.growth = mesh.growth;
+    placed.container = mesh.container;
+    placed.art = type.art;
+    std::size_t k = 0;
+    for (Shape& shape : placed.art) {
+      shape.strokeWidth *= mesh.growth / frame.scale;
+      for (Subpath& sub : shape.subpaths)
+        for (Vec2& p : sub.points) p = frame.toInput(artPoints[k++]);
+    }
+    int edges = 0;
+    for (const Spring& s : type.mesh.springs)
+      if (s.kind == SpringKind::Edge) {
+        const double strain = std::abs(distance(vertices[s.a], vertices[s.b]) / (s.restLength * mesh.growth) - 1.0);
+        placed.maxEdgeStrain = std::max(placed.maxEdgeStrain, strain);
+        placed.meanEdgeStrain += strain;
+        ++edges;
+      }
+    if (edges > 0) placed.meanEdgeStrain /= edges;
+    for (int v = 0; v < mesh.vertexCount; ++v) placed.meshVertices.push_back(frame.toInput(vertices[v]));
+    placed.skin.assign(placed.meshVertices.begin(), placed.meshVertices.begin() + mesh.boundaryCount);
+    placed.meshTriangles = type.mesh.mesh.triangles;
+    packing.elements.push_back(std::move(placed));
+  }
+  packing.fixedArt = run.fixedArt;
+  return packing;
+}
+
+bool artIsClean(const Packing& packing) {
+  std::vector<Region> checked = artOutlines(packing);
+  if (!packing.fixedArt.empty()) checked.push_back(packing.fixedArt);
+  PackingCheckOptions options;
+  options.areaTolerance = 1e-6 * area(packing.container);
+  return verifyPacking(checked, packing.container, options).ok;
+}
+
+Packing collectPrimary(const RepulsionRun& run, PackingSimulation& sim, const Seeding& seeding, StopReason reason) {
+  Packing packing = collectPacking(run, sim, run.types);
+  if (!isTiled(run.period) && !artIsClean(packing) && sim.projectInside() > 0) packing = collectPacking(run, sim, run.types);
+  packing.stopReason = reason;
+  packing.containers = run.setup.containers.regions;
+  if (seeding.docking) {
+    for (const SalientCorner& c : seeding.docking->match().corners)
+      packing.salientCorners.push_back(run.setup.frame.toInput(c.position));
+    packing.dockedElements = seeding.docking->dockedCount();
+    packing.shapeMatchingSeconds = seeding.matchingSeconds;
+  }
+  packing.tile = isTiled(run.options.tiling.size) ? run.options.tiling.size : Vec2{};
+  packing.passes.push_back({static_cast<int>(sim.meshes().size()), sim.iteration(), reason, secondsSince(run.started),
+                            packing.skinFill, artFill(packing)});
+  return packing;
+}
+
+}  // namespace pak

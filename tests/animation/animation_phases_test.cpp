@@ -1,0 +1,61 @@
+// AnimationPak's phases one by one (src/animation/animation_phases.hpp): what each promises,
+// and that running them in order is packAnimation.
+#include "animation/animation_phases.hpp"
+
+#include <gtest/gtest.h>
+
+#include "animation/animation_fixtures.hpp"
+
+namespace pak {
+namespace {
+
+TEST(AnimationPhases, SeedingPlacesEveryCopyShrunkAndApart) {
+  const Scene scene = test::discScene();
+  const Library library{test::starElement("star.svg")};
+  const AnimationScript script = test::spinningStars(6);
+  const AnimationRun run = prepareAnimation(scene, library, script, test::quickAnimationOptions());
+  ASSERT_EQ(run.types.size(), 1u);
+  EXPECT_EQ(run.meshes.size(), 1u);
+  EXPECT_EQ(run.types[0].shapes.size(), static_cast<std::size_t>(script.slices));
+  const AnimationSeeding seeding = seedAnimation(run);
+  ASSERT_EQ(seeding.instances.size(), 6u);
+  EXPECT_GT(seeding.growth, 0.0);
+  EXPECT_LE(seeding.growth, run.options.initialScale);
+  // Seeds r apart hold shrunken elements of radius ≤ 0.45 r: the centres keep apart.
+  for (std::size_t a = 0; a < seeding.instances.size(); ++a)
+    for (std::size_t b = a + 1; b < seeding.instances.size(); ++b)
+      EXPECT_GT(distance(seeding.instances[a].centre[0], seeding.instances[b].centre[0]),
+                2.0 * run.types[0].radius * seeding.growth);
+}
+
+TEST(AnimationPhases, InOrderTheyArePackAnimation) {
+  const Scene scene = test::discScene();
+  const Library library{test::starElement("star.svg")};
+  const AnimationScript script = test::spinningStars(5);
+  const AnimationOptions options = test::quickAnimationOptions();
+  const AnimationRun run = prepareAnimation(scene, library, script, options);
+  const AnimationSeeding seeding = seedAnimation(run);
+  ThreadPool pool(options.run.threads);
+  SpacetimeSimulation sim = spacetimeSimulation(run, seeding, pool, nullptr);
+  EXPECT_EQ(sim.elementCount(), 5);
+  EXPECT_EQ(sim.slices(), script.slices);
+  const AnimationStop stop = simulateAnimation(sim, run, {}, nullptr);
+  const AnimatedPacking byPhases = collectAnimation(run, seeding, sim, stop, pool);
+  const AnimatedPacking packed = packAnimation(scene, library, script, options);
+  EXPECT_EQ(byPhases.iterations, packed.iterations);
+  EXPECT_EQ(byPhases.stopReason, packed.stopReason);
+  ASSERT_EQ(byPhases.elements.size(), packed.elements.size());
+  for (std::size_t e = 0; e < packed.elements.size(); ++e) EXPECT_EQ(byPhases.elements[e].slices, packed.elements[e].slices);
+}
+
+TEST(AnimationPhases, TheTimeLimitStopsTheRun) {
+  AnimationOptions options = test::quickAnimationOptions();
+  options.stop.timeLimit = 1e-9;
+  const AnimatedPacking a =
+      packAnimation(test::discScene(), {test::starElement("star.svg")}, test::spinningStars(4), options);
+  EXPECT_EQ(a.stopReason, AnimationStop::TimeLimit);
+  EXPECT_EQ(a.iterations, 1);
+}
+
+}  // namespace
+}  // namespace pak
