@@ -150,7 +150,7 @@ TEST(SpacetimeSimulationDeathTest, AssertsTheOrderAddFinalizeStep) {
   const Region container{Polygon{test::discRing({500, 500}, 450), {}}};
   const RegionIndex index(container, 10.0);
   ThreadPool pool(1);
-  SpacetimeSimulation unfinished(index, area(container), 4, SpacetimeParameters{}, pool);
+  SpacetimeSimulation unfinished(index, area(container), 4, SimulationParameters{.cellSize = 40.0}, SpacetimeParameters{}, pool);
   EXPECT_DEATH(unfinished.step(), "step only after finalize");
   TwoTubes tubes(1);  // finalized
   SpacetimeElementSetup setup;
