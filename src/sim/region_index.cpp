@@ -70,8 +70,15 @@ RegionIndex::RegionIndex(const Region& input, double cellSize) : cell_(cellSize)
 }
 
 RegionIndex::Query RegionIndex::closestAround(Vec2 p) const {
-  int ci = static_cast<int>(std::floor((p.x - origin_.x) / cell_));
-  int cj = static_cast<int>(std::floor((p.y - origin_.y) / cell_));
+  // A non-finite point has no closest boundary; the step's assertion reports it.
+  if (!std::isfinite(p.x) || !std::isfinite(p.y)) return Query{};
+  // Start from the grid cell nearest p, so a point far outside costs no more than one inside:
+  // every cell r rings away from it is still at least r - 1 cells from p.
+  auto cellOf = [&](double offset, int n) {
+    return static_cast<int>(std::clamp(std::floor(offset / cell_), 0.0, double(n - 1)));
+  };
+  int ci = cellOf(p.x - origin_.x, nx_);
+  int cj = cellOf(p.y - origin_.y, ny_);
   double best = std::numeric_limits<double>::infinity();
   int bestSegment = -1;
   double bestT = 0.0;
@@ -83,7 +90,7 @@ RegionIndex::Query RegionIndex::closestAround(Vec2 p) const {
     if (d < best) { best = d; bestSegment = s; bestT = t; bestPoint = q; }
   };
   // Rings of cells around p; once the best distance is within the ring's inner radius, stop.
-  int maxRing = std::max(nx_, ny_) + std::max(std::abs(ci), std::abs(cj)) + 1;
+  int maxRing = std::max(nx_, ny_) + 1;
   for (int r = 0; r <= maxRing; ++r) {
     for (int j = cj - r; j <= cj + r; ++j) {
       if (j < 0 || j >= ny_) continue;
@@ -112,9 +119,10 @@ RegionIndex::Query RegionIndex::closestAround(Vec2 p) const {
 RegionIndex::Query RegionIndex::query(Vec2 p, bool wantClosest) const {
   Query q;
   if (segments_.empty()) return q;
-  int ci = static_cast<int>(std::floor((p.x - origin_.x) / cell_));
-  int cj = static_cast<int>(std::floor((p.y - origin_.y) / cell_));
-  bool inGrid = ci >= 0 && cj >= 0 && ci < nx_ && cj < ny_;
+  if (!std::isfinite(p.x) || !std::isfinite(p.y)) return q;
+  double fi = std::floor((p.x - origin_.x) / cell_), fj = std::floor((p.y - origin_.y) / cell_);
+  bool inGrid = fi >= 0 && fj >= 0 && fi < nx_ && fj < ny_;
+  int ci = inGrid ? static_cast<int>(fi) : 0, cj = inGrid ? static_cast<int>(fj) : 0;
   if (inGrid && cellState_[cellIndex(ci, cj)] != kCrossed && !wantClosest) {
     q.inside = cellState_[cellIndex(ci, cj)] == kInside;
     return q;

@@ -69,8 +69,8 @@ TEST(SpacetimeSimulation, SliceConstraintsHoldAfterEveryStep) {
       const int begin = tubes.sim.vertexBegin(e);
       for (int s = 0; s < TwoTubes::kSlices; ++s) {
         const double t0 = x[begin + s * n].t;
-        if (s == 0) ASSERT_EQ(t0, 0.0);                          // end-to-end
-        if (s == TwoTubes::kSlices - 1) ASSERT_EQ(t0, T);
+        if (s == 0) { ASSERT_EQ(t0, 0.0); }  // end-to-end
+        if (s == TwoTubes::kSlices - 1) { ASSERT_EQ(t0, T); }
         for (int v = 0; v < n; ++v) ASSERT_EQ(x[begin + s * n + v].t, t0) << "simultaneity, slice " << s;
       }
     }

@@ -2,6 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
+
+#include "pak/geom/closest_point.hpp"
 #include "pak/geom/rng.hpp"
 
 using namespace pak;
@@ -48,4 +52,30 @@ TEST(RegionIndex, AgreesWithPointInRegionEverywhere) {
     EXPECT_EQ(index.query(p, false).inside, pointInRegion(p, region)) << p.x << "," << p.y;
     EXPECT_EQ(index.query(p, true).inside, pointInRegion(p, region)) << p.x << "," << p.y;
   }
+}
+
+TEST(RegionIndex, FarOutsidePointsFindTheirClosestBoundaryPoint) {
+  // The search starts at the grid cell nearest the point, so distance costs nothing.
+  RegionIndex index(squareWithHole(), 0.5);
+  auto far = index.query({1e9, 30}, true);
+  ASSERT_TRUE(far.computed);
+  EXPECT_NEAR(far.closest.x, 100.0, 1e-6);
+  EXPECT_NEAR(far.closest.y, 30.0, 1e-6);
+  EXPECT_FALSE(far.inside);
+  auto diagonal = index.query({-1e7, -1e7}, true);
+  EXPECT_NEAR(diagonal.closest.x, 0.0, 1e-6);
+  EXPECT_NEAR(diagonal.closest.y, 0.0, 1e-6);
+  Rng rng(11);
+  for (int i = 0; i < 2000; ++i) {
+    Vec2 p{rng.uniform(-300, 400), rng.uniform(-300, 400)};
+    auto q = index.query(p, true);
+    EXPECT_NEAR(q.distance, closestPointOnBoundary(p, squareWithHole()).distance, 1e-9)
+        << p.x << "," << p.y;
+  }
+}
+
+TEST(RegionIndex, NonFinitePointHasNoClosestBoundary) {
+  RegionIndex index(squareWithHole(), 7.0);
+  EXPECT_FALSE(index.query({std::nan(""), 3}, true).computed);
+  EXPECT_FALSE(index.query({3, std::numeric_limits<double>::infinity()}, true).computed);
 }
