@@ -14,7 +14,8 @@ FrameAudit auditFrames(const std::vector<Packing>& frames, const Region& contain
   for (const Packing& frame : frames) {
     const std::vector<Region> outlines = artOutlines(frame);
     for (const Region& r : outlines) audit.meanFill += area(r) / containerArea / frameCount;
-    const PackingCheck check = checkArt(outlines, container);
+    const PackingCheck check = checkArt(outlines, container, artRings(frame));
+    audit.framesSelfIntersecting += check.selfIntersecting > 0 ? 1 : 0;
     audit.framesWithOverlap += check.overlappingPairs > 0 ? 1 : 0;
     audit.framesOutside += check.elementsOutside > 0 ? 1 : 0;
     audit.worstPairs = std::max(audit.worstPairs, check.overlappingPairs);
@@ -45,6 +46,7 @@ nlohmann::json animateReport(const AnimateArguments& args, const AnimatedPacking
   report["overlapping-slices-at-end"] = animation.overlappingSlices;
   report["frames-with-overlaps"] = audit.framesWithOverlap;
   report["frames-with-element-outside"] = audit.framesOutside;
+  report["frames-with-self-intersecting-outline"] = audit.framesSelfIntersecting;
   report["most-overlapping-pairs-in-a-frame"] = audit.worstPairs;
   report["largest-overlap-area-fraction"] = audit.worstOverlapArea;
   report["seconds"] = {{"setup", animation.setupSeconds},

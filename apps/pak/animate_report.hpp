@@ -11,7 +11,7 @@ namespace pak::cli {
 // Overlaps between rendered frames (thesis 5.6 warns of brief ones between slices): measured
 // on every frame, reported, never hidden.
 struct FrameAudit {
-  int framesWithOverlap = 0, framesOutside = 0, worstPairs = 0;
+  int framesWithOverlap = 0, framesOutside = 0, framesSelfIntersecting = 0, worstPairs = 0;
   double worstOverlapArea = 0.0;  // fraction of the container
   double meanFill = 0.0;          // art fill, mean over frames
 };

@@ -2,10 +2,13 @@
 
 namespace pak::cli {
 
-PackingCheck checkArt(const std::vector<Region>& outlines, const Region& container) {
+PackingCheck checkArt(const std::vector<Region>& outlines, const Region& container,
+                      const std::vector<std::vector<Ring>>& rings) {
   PackingCheckOptions options;
   options.areaTolerance = 1e-6 * area(container);
-  return verifyPacking(outlines, container, options);
+  PackingCheck check = verifyPacking(outlines, container, options);
+  checkSelfIntersections(rings, check);
+  return check;
 }
 
 }  // namespace pak::cli

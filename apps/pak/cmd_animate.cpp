@@ -142,10 +142,12 @@ int runAnimate(AnimateArguments& args, const CLI::App& command) {
   if (!common.quiet)
     std::fprintf(stderr,
                  "pak animate: %zu elements, %zu vertices, %zu springs, %d slices, %d iterations (%s), art fill %.3f "
-                 "(mean over frames), %d/%d frames with overlaps, %d with an element outside; simulation %.1f s, "
+                 "(mean over frames), %d/%d frames with overlaps, %d with an element outside, %d with a self-crossing "
+                 "outline; simulation %.1f s, "
                  "rendering %.1f s; wrote %s\n",
                  animation.elements.size(), animation.vertices, animation.springs, animation.slices, animation.iterations,
                  toString(animation.stopReason), audit.meanFill, audit.framesWithOverlap, frameCount, audit.framesOutside,
+                 audit.framesSelfIntersecting,
                  times.simulation, times.rendering, common.output.c_str());
   if (!common.report.empty())
     writeFileAtomically(common.report, animateReport(args, animation, frameCount, audit, times).dump(2) + "\n");

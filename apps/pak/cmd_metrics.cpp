@@ -27,6 +27,7 @@
 #include "pak/io/packing_reader.hpp"
 #include "pak/io/text_file.hpp"
 #include "pak/metrics/evenness.hpp"
+#include "report_fields.hpp"
 #include "pak/metrics/metrics.hpp"
 
 namespace pak::cli {
@@ -101,20 +102,6 @@ std::string general(double value) {
 
 json curveJson(const Curve& curve) { return {{"r", curve.r}, {"value", curve.value}}; }
 
-json evennessJson(const Evenness& e) {
-  return {{"resolution", e.resolution},
-          {"cell", e.cell},
-          {"negative-ratio", e.negativeRatio},
-          {"h", e.halfWidth},
-          {"P1", e.pocketShare[0]},
-          {"P2", e.pocketShare[1]},
-          {"P3", e.pocketShare[2]},
-          {"largest-empty-radius", e.largestEmptyRadius},
-          {"largest-radius-over-h", e.largestRadiusOverHalfWidth},
-          {"width-spread", e.widthSpread},
-          {"axis-length", e.axisLength},
-          {"filled-hole-ratio", e.containerCells > 0 ? static_cast<double>(e.filledHoleCells) / e.containerCells : 0.0}};
-}
 
 json packingJson(const Measured& measured, const std::optional<double>& offset) {
   const PackingMetrics& m = measured.metrics;

@@ -130,10 +130,11 @@ int runPack(PackArguments& args, const CLI::App& command) {
   if (!common.quiet)
     std::fprintf(stderr,
                  "pak pack: %zu elements, %d vertices, %d iterations (%s), art fill %.3f, skin fill %.3f, "
-                 "%d overlapping pairs, %d outside, %s\n",
+                 "%d overlapping pairs, %d outside, %d self-crossing outlines, pocket share P2 %.3f, %s\n",
                  packing.elements.size(), packing.vertexCount, packing.iterations, toString(packing.stopReason),
                  audit.artArea / audit.containerArea, packing.skinFill, audit.check.overlappingPairs,
-                 audit.check.elementsOutside, formatSeconds(times.wall).c_str());
+                 audit.check.elementsOutside, audit.check.selfIntersecting, audit.evenness.pocketShare[1],
+                 formatSeconds(times.wall).c_str());
   if (!common.report.empty())
     writeFileAtomically(common.report, packReport(args, scene, packing, audit, times).dump(2) + "\n");
   return 0;

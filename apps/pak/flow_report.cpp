@@ -10,7 +10,7 @@ PackingCheck auditFlowPacking(const FlowPacking& packing) {
   for (const auto* list : {&packing.elements, &packing.gapElements})
     for (const FlowElement& e : *list) outlines.push_back(e.outline);
   if (!packing.fixedArt.empty()) outlines.push_back(packing.fixedArt);
-  return checkArt(outlines, packing.container);
+  return checkArt(outlines, packing.container, {});  // FLOWPAK's fold check is issue 16's
 }
 
 nlohmann::json flowReport(const FlowArguments& args, const FlowPacking& packing, const PackingCheck& check,

@@ -1,11 +1,13 @@
 #include "pack_report.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <thread>
 
 #include "art_check.hpp"
 #include "pak/geom/closest_point.hpp"
+#include "pak/metrics/packing_geometry.hpp"
 #include "pak/repulsion/shape_matching.hpp"
 #include "pak/repulsion/tiling.hpp"
 #include "report_fields.hpp"
@@ -44,6 +46,14 @@ void reportCorners(nlohmann::json& report, const Packing& packing, const std::ve
   report["corner-art-distance-mean"] = corners.empty() ? 0.0 : cornerSum / static_cast<double>(corners.size());
 }
 
+double coefficientOfVariation(const std::vector<double>& values) {
+  if (values.size() < 2) return 0.0;
+  double mean = 0.0, square = 0.0;
+  for (double v : values) mean += v / static_cast<double>(values.size());
+  for (double v : values) square += (v - mean) * (v - mean) / static_cast<double>(values.size());
+  return mean > 0.0 ? std::sqrt(square) / mean : 0.0;
+}
+
 }  // namespace
 
 PackAudit auditPacking(const Packing& packing) {
@@ -54,9 +64,15 @@ PackAudit auditPacking(const Packing& packing) {
   audit.containerArea = area(packing.container);
   std::vector<Region> checked = audit.outlines;
   if (!packing.fixedArt.empty()) checked.push_back(packing.fixedArt);
-  audit.check = checkArt(checked, packing.container);
+  audit.check = checkArt(checked, packing.container, artRings(packing));
   audit.artArea = area(packing.fixedArt);
   for (const Region& r : audit.outlines) audit.artArea += area(r);
+  // A tile's negative space is measured on one period, as it is drawn.
+  audit.evenness = measureEvenness(packingGeometry(packing));
+  std::vector<double> areas;
+  for (std::size_t k = 0; k < packing.elements.size(); ++k)
+    if (!packing.elements[k].secondary && !isTiled(packing.tile)) areas.push_back(area(audit.outlines[k]));
+  audit.primaryAreaSpread = coefficientOfVariation(areas);
   return audit;
 }
 
@@ -101,6 +117,8 @@ nlohmann::json packReport(const PackArguments& args, const Scene& scene, const P
   report["vertex-count"] = packing.vertexCount;
   report["spring-count"] = packing.springCount;
   reportCheck(report, audit.check);
+  report["evenness"] = evennessJson(audit.evenness);
+  report["primary-area-cv"] = audit.primaryAreaSpread;  // standard deviation / mean of the primaries' art areas
   report["canonical-scale"] = packing.canonicalScale;
   reportElementsPerContainer(report, packing.elements, packing.containers.size());
   reportCorners(report, packing, audit.outlines);

@@ -6,6 +6,7 @@
 
 #include "pack_arguments.hpp"
 #include "pak/geom/verify.hpp"
+#include "pak/metrics/evenness.hpp"
 
 namespace pak::cli {
 
@@ -15,6 +16,8 @@ struct PackAudit {
   PackingCheck check;            // the fixed elements count as one more (immovable) element
   double containerArea = 0.0;
   double artArea = 0.0;          // the elements' and fixed elements' art
+  Evenness evenness;             // of the negative space, as `pak metrics` measures it
+  double primaryAreaSpread = 0.0;  // coefficient of variation of the primaries' art areas
 };
 PackAudit auditPacking(const Packing& packing);
 

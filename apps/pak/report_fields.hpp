@@ -5,14 +5,19 @@
 #include <nlohmann/json.hpp>
 
 #include "pak/geom/verify.hpp"
+#include "pak/metrics/evenness.hpp"
 
 namespace pak::cli {
 
 // A report's start: the run's parameters, and the units its distances are in.
 nlohmann::json reportWithParameters(const nlohmann::json& parameters, const char* units);
 
-// overlap-count, overlap-area, elements-outside, outside-area, problems.
+// overlap-count, overlap-area, elements-outside, outside-area, self-intersecting-outlines,
+// problems.
 void reportCheck(nlohmann::json& report, const PackingCheck& check);
+
+// The evenness measure (pak metrics, pak pack --report): P1–P3, h, the widest pocket …
+nlohmann::json evennessJson(const Evenness& evenness);
 
 // elements-per-container: how many of `elements` (each with a `container` index) each of the
 // `containers` containers holds.

@@ -105,4 +105,47 @@ PackingCheck verifyPacking(const std::vector<Region>& elements, const Region& co
   return check;
 }
 
+bool ringSelfIntersects(const Ring& input) {
+  Ring ring;
+  for (Vec2 p : input)
+    if (ring.empty() || !(p == ring.back())) ring.push_back(p);
+  while (ring.size() > 1 && ring.front() == ring.back()) ring.pop_back();
+  const std::size_t n = ring.size();
+  if (n < 4) return false;
+  // Sweep the edges by their smallest x; only edges whose x ranges overlap are compared.
+  std::vector<std::size_t> order(n);
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  auto lo = [&](std::size_t e) { return std::min(ring[e].x, ring[(e + 1) % n].x); };
+  auto hi = [&](std::size_t e) { return std::max(ring[e].x, ring[(e + 1) % n].x); };
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return lo(a) < lo(b); });
+  auto side = [](Vec2 a, Vec2 b, Vec2 c) {
+    const double o = cross(b - a, c - a);
+    return (o > 0.0) - (o < 0.0);
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t e = order[i];
+    const Vec2 a = ring[e], b = ring[(e + 1) % n];
+    const double eMinY = std::min(a.y, b.y), eMaxY = std::max(a.y, b.y), eMaxX = hi(e);
+    for (std::size_t j = i + 1; j < n && lo(order[j]) <= eMaxX; ++j) {
+      const std::size_t f = order[j];
+      if (f == (e + 1) % n || e == (f + 1) % n) continue;  // neighbours share a vertex
+      const Vec2 c = ring[f], d = ring[(f + 1) % n];
+      if (std::max(c.y, d.y) < eMinY || std::min(c.y, d.y) > eMaxY) continue;
+      if (side(a, b, c) * side(a, b, d) < 0 && side(c, d, a) * side(c, d, b) < 0) return true;
+    }
+  }
+  return false;
+}
+
+void checkSelfIntersections(const std::vector<std::vector<Ring>>& outlines, PackingCheck& check) {
+  for (std::size_t i = 0; i < outlines.size(); ++i)
+    for (const Ring& ring : outlines[i])
+      if (ringSelfIntersects(ring)) {
+        ++check.selfIntersecting;
+        check.ok = false;
+        check.problems.push_back("element " + std::to_string(i) + "'s outline crosses itself");
+        break;
+      }
+}
+
 }  // namespace pak

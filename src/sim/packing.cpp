@@ -25,6 +25,17 @@ std::vector<Region> artOutlines(const Packing& packing) {
   return outlines;
 }
 
+std::vector<std::vector<Ring>> artRings(const Packing& packing) {
+  std::vector<std::vector<Ring>> rings;
+  for (const PlacedElement& e : packing.elements) {
+    std::vector<Ring>& own = rings.emplace_back();
+    for (const Shape& s : e.art)
+      if (s.fill)
+        for (const Subpath& sub : s.subpaths) own.push_back(sub.points);
+  }
+  return rings;
+}
+
 double artFill(const Packing& packing) {
   double total = area(packing.fixedArt);
   for (const Region& r : artOutlines(packing)) total += area(r);

@@ -44,6 +44,29 @@ TEST(CliPack, WritesTheOutputLayoutAndAReport) {
     EXPECT_TRUE(std::filesystem::exists(dir.path() / "snaps" / snap)) << snap;
 }
 
+TEST(CliPack, ReportHasTheEvennessPakMetricsMeasuresOnTheOutput) {
+  ScratchFolder dir("cli-pack-evenness");
+  PakRun run = runPak(kQuick + " -o " + shellQuoted(dir.file("out.svg")) + " --report " + shellQuoted(dir.file("r.json")));
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  PakRun metrics = runPak("metrics " + shellQuoted(dir.file("out.svg")) + " --json " + shellQuoted(dir.file("m.json")));
+  ASSERT_EQ(metrics.exitCode, 0) << metrics.err;
+  auto report = nlohmann::json::parse(readWholeFile(dir.file("r.json")));
+  auto measured = nlohmann::json::parse(readWholeFile(dir.file("m.json")))["packings"][0]["evenness"];
+  ASSERT_TRUE(report.contains("evenness"));
+  // The output SVG rounds coordinates and the medial axis moves with them by a cell here and
+  // there, so the two agree closely, not to the bit.
+  EXPECT_NEAR(report["evenness"]["negative-ratio"].get<double>(), measured["negative-ratio"].get<double>(), 1e-3);
+  for (const char* key : {"P1", "P2", "P3"})
+    EXPECT_NEAR(report["evenness"][key].get<double>(), measured[key].get<double>(), 0.03) << key;
+  EXPECT_GT(report["evenness"]["P2"].get<double>(), 0.0);  // 300 iterations leave pockets
+  // This short run stops mid-growth with element 3 folded; each fold is named in the problems.
+  int folds = 0;
+  for (const auto& problem : report["problems"]) folds += count(problem.get<std::string>(), "crosses itself");
+  EXPECT_EQ(report["self-intersecting-outlines"], folds);
+  EXPECT_GT(report["primary-area-cv"].get<double>(), 0.0);
+  EXPECT_LT(report["primary-area-cv"].get<double>(), 1.0);
+}
+
 TEST(CliPack, DebugLayersAddSkinsAndMeshes) {
   ScratchFolder dir("cli-pack-debug");
   PakRun run = runPak("pack -c examples/scene.svg -e examples/elements --count 6 --gap 20 --max-iterations 10 --quiet "

@@ -120,3 +120,33 @@ TEST(VerifyPacking, CatchesElementOutsideAndInHole) {
   EXPECT_TRUE(mentions(check.problems, "element 1 lies outside"));
   EXPECT_FALSE(mentions(check.problems, "element 2 "));
 }
+
+TEST(SelfIntersection, SimpleRingsDoNotCross) {
+  EXPECT_FALSE(ringSelfIntersects(square(0, 0, 10)));
+  // A concave comb, repeated points and a closing vertex repeated: still simple.
+  EXPECT_FALSE(ringSelfIntersects({{0, 0}, {10, 0}, {10, 10}, {7, 10}, {7, 2}, {7, 2}, {3, 2}, {3, 10}, {0, 10}, {0, 0}}));
+  // Touching without crossing (a vertex on another edge) is not a crossing.
+  EXPECT_FALSE(ringSelfIntersects({{0, 0}, {10, 0}, {10, 10}, {5, 0}, {0, 10}}));
+  EXPECT_FALSE(ringSelfIntersects({{0, 0}, {1, 1}}));
+}
+
+TEST(SelfIntersection, FigureEightAndFoldedLimbCross) {
+  EXPECT_TRUE(ringSelfIntersects({{0, 0}, {10, 10}, {10, 0}, {0, 10}}));
+  // A body with a limb folded back over it: the limb's edges cross the body's top edge.
+  const Ring folded{{0, 0}, {20, 0}, {20, 10}, {12, 10}, {12, 4}, {6, 4}, {6, 14}, {9, 14}, {9, 10}, {0, 10}};
+  EXPECT_TRUE(ringSelfIntersects(folded));
+  // The same ring, rotated in its starting point, is found too (the sweep does not depend on it).
+  Ring shifted(folded.begin() + 3, folded.end());
+  shifted.insert(shifted.end(), folded.begin(), folded.begin() + 3);
+  EXPECT_TRUE(ringSelfIntersects(shifted));
+}
+
+TEST(SelfIntersection, CheckCountsElementsOnce) {
+  PackingCheck check;
+  const Ring eight{{0, 0}, {10, 10}, {10, 0}, {0, 10}};
+  checkSelfIntersections({{square(0, 0, 5)}, {eight, eight}, {square(20, 0, 5), eight}}, check);
+  EXPECT_EQ(check.selfIntersecting, 2);
+  EXPECT_FALSE(check.ok);
+  ASSERT_EQ(check.problems.size(), 2u);
+  EXPECT_EQ(check.problems[0], "element 1's outline crosses itself");
+}

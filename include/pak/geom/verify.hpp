@@ -23,6 +23,7 @@ struct PackingCheck {
   double overlapArea = 0.0;   // total pairwise overlap area
   int elementsOutside = 0;    // elements with more than the tolerance outside the container
   double outsideArea = 0.0;
+  int selfIntersecting = 0;   // elements whose outline crosses itself (see checkSelfIntersections)
   std::vector<std::string> problems;
 };
 
@@ -34,5 +35,13 @@ struct PackingCheckOptions {
 // No two elements overlap and every element lies inside the container (and out of its holes).
 PackingCheck verifyPacking(const std::vector<Region>& elements, const Region& container,
                            const PackingCheckOptions& options = {});
+
+// Whether two edges of the closed ring that share no vertex cross (a fold, a figure eight).
+// Edges that only touch, and repeated consecutive points, are not crossings.
+bool ringSelfIntersects(const Ring& ring);
+
+// Counts the elements whose outline crosses itself (a limb folded over its own body), one
+// problem each: `outlines[i]` holds element i's filled rings as drawn. Clears `check.ok` if any.
+void checkSelfIntersections(const std::vector<std::vector<Ring>>& outlines, PackingCheck& check);
 
 }  // namespace pak

@@ -64,6 +64,9 @@ struct Packing {
 
 // What each placed element paints, as one region per element (the union of its shapes).
 std::vector<Region> artOutlines(const Packing& packing);
+// Each placed element's filled rings as drawn (its filled shapes' subpaths; strokes are
+// bands, not outlines), for checkSelfIntersections.
+std::vector<std::vector<Ring>> artRings(const Packing& packing);
 // Total painted area of the elements and the fixed elements over the container area.
 double artFill(const Packing& packing);
 
