@@ -9,7 +9,7 @@
 #   QUALITY_ARGS="--overlap-tolerance 0" …                # extra pack options for every run
 set -euo pipefail
 source "$(dirname "$0")/common.sh"
-seeds=${QUALITY_SEEDS:-$(seq 1 10)}
+seeds=${QUALITY_SEEDS:-$(seq -s " " 1 10)}
 extra=${QUALITY_ARGS:-}
 csv=bench/quality-results.csv
 header="date,commit,scene,seeds,args,neg_median,neg_worst,P2_median,P2_worst,overlaps_worst,outside_worst,self_crossing_worst,iterations_median,wall_s_median,wall_s_worst,area_cv_median"

@@ -8,8 +8,9 @@
 namespace pak::cli {
 
 // Overlaps between `outlines` and parts outside `container`, ignoring areas below 1e-6 of it;
-// and the elements whose drawn rings (`rings[i]`, element i's) cross themselves.
+// and the elements whose placed rings (`rings[i]`, element i's) cross themselves where their
+// rings as drawn (`rest[i]`) do not.
 PackingCheck checkArt(const std::vector<Region>& outlines, const Region& container,
-                      const std::vector<std::vector<Ring>>& rings);
+                      const std::vector<std::vector<Ring>>& rings, const std::vector<std::vector<Ring>>& rest = {});
 
 }  // namespace pak::cli

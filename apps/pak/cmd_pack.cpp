@@ -125,7 +125,7 @@ int runPack(PackArguments& args, const CLI::App& command) {
     writePngPreview(tileRepetition(drawing, args.options.tiling.size, n, n), args.tilePreview, common.pngWidth);
   }
 
-  const PackAudit audit = auditPacking(packing);
+  const PackAudit audit = auditPacking(packing, library, secondaryLibrary);
   times.wall = std::chrono::duration<double>(Clock::now() - start).count();
   if (!common.quiet)
     std::fprintf(stderr,

@@ -22,6 +22,7 @@ nlohmann::json passesReport(const Packing& packing) {
     passes.push_back({{"pass", k == 0 ? "primary" : "secondary"},
                       {"elements", pass.elements},
                       {"iterations", pass.iterations},
+                      {"settle-iterations", pass.settleIterations},
                       {"stop-reason", toString(pass.stopReason)},
                       {"seconds", pass.seconds},
                       {"fill-ratio-skin", pass.skinFill},
@@ -56,7 +57,7 @@ double coefficientOfVariation(const std::vector<double>& values) {
 
 }  // namespace
 
-PackAudit auditPacking(const Packing& packing) {
+PackAudit auditPacking(const Packing& packing, const Library& library, const Library& secondary) {
   PackAudit audit;
   audit.outlines = artOutlines(packing);
   // A tile is checked on the torus: every clone's piece inside the tile, seams included.
@@ -64,7 +65,14 @@ PackAudit auditPacking(const Packing& packing) {
   audit.containerArea = area(packing.container);
   std::vector<Region> checked = audit.outlines;
   if (!packing.fixedArt.empty()) checked.push_back(packing.fixedArt);
-  audit.check = checkArt(checked, packing.container, artRings(packing));
+  std::vector<std::vector<Ring>> rest;
+  for (const PlacedElement& e : packing.elements) {
+    const Library& from = e.secondary ? secondary : library;
+    rest.push_back(e.libraryIndex >= 0 && e.libraryIndex < static_cast<int>(from.size())
+                       ? artRings(from[e.libraryIndex].shapes)
+                       : std::vector<Ring>{});
+  }
+  audit.check = checkArt(checked, packing.container, artRings(packing), rest);
   audit.artArea = area(packing.fixedArt);
   for (const Region& r : audit.outlines) audit.artArea += area(r);
   // A tile's negative space is measured on one period, as it is drawn.

@@ -19,7 +19,8 @@ struct PackAudit {
   Evenness evenness;             // of the negative space, as `pak metrics` measures it
   double primaryAreaSpread = 0.0;  // coefficient of variation of the primaries' art areas
 };
-PackAudit auditPacking(const Packing& packing);
+// `library` and `secondary` are the libraries the packing was made from (for the art as drawn).
+PackAudit auditPacking(const Packing& packing, const Library& library, const Library& secondary);
 
 struct PackTimes {
   double wall = 0.0, simulation = 0.0;  // seconds

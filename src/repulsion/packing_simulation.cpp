@@ -11,6 +11,12 @@ namespace pak {
 namespace {
 
 constexpr std::size_t kVertexGrain = 256;
+// A triangle pushes back once squeezed below this share of its rest area (anti-inversion).
+constexpr double kInversionShare = 0.25;
+// Self-repulsion: skin segments fewer than this many away along the ring are v's own side.
+constexpr int kSelfNeighbourhood = 6;
+// …and repel only once nearer than this share of their distance at rest.
+constexpr double kSelfClearanceShare = 0.5;
 
 inline Vec2 closestOnSegment(Vec2 p, Vec2 a, Vec2 b, double& t) {
   Vec2 ab = b - a;
@@ -55,12 +61,31 @@ int PackingSimulation::addMesh(const ElementMesh& mesh, int type, Vec2 position,
     meshOf_.push_back(id);
   }
   int base = instance.vertexBegin;
+  // Self-repulsion's rest clearance: each skin vertex's distance, at growth 1, to the nearest
+  // skin segment away from it along the ring (brute force, once per mesh).
+  const std::vector<Vec2>& restSkin = mesh.mesh.vertices;
+  for (int k = 0; k < mesh.boundaryCount; ++k) {
+    double clearance2 = std::numeric_limits<double>::infinity();
+    for (int j = 0; j < mesh.boundaryCount; ++j) {
+      const int along = std::min(std::abs(j - k), mesh.boundaryCount - std::abs(j - k));
+      if (along <= kSelfNeighbourhood) continue;
+      double t;
+      const Vec2 q = closestOnSegment(restSkin[k], restSkin[j], restSkin[(j + 1) % mesh.boundaryCount], t);
+      clearance2 = std::min(clearance2, lengthSquared(restSkin[k] - q));
+    }
+    restSelfClearance_.push_back(std::sqrt(clearance2));
+  }
+  for (int k = mesh.boundaryCount; k < instance.vertexCount; ++k) restSelfClearance_.push_back(0.0);
   for (int k = 0; k < mesh.boundaryCount; ++k) {
     segmentEnds_.push_back(base + k);
     segmentEnds_.push_back(base + (k + 1) % mesh.boundaryCount);
     segmentMesh_.push_back(id);
   }
-  for (const auto& tri : mesh.mesh.triangles) triangles_.push_back({base + tri[0], base + tri[1], base + tri[2]});
+  for (const auto& tri : mesh.mesh.triangles) {
+    triangles_.push_back({base + tri[0], base + tri[1], base + tri[2]});
+    const std::vector<Vec2>& rest = mesh.mesh.vertices;
+    triangleRestArea_.push_back(0.5 * cross(rest[tri[1]] - rest[tri[0]], rest[tri[2]] - rest[tri[0]]));
+  }
   for (const Spring& s : mesh.springs) {
     pending_.ends.emplace_back(base + s.a, base + s.b);
     pending_.rest.push_back(s.restLength);
@@ -78,6 +103,8 @@ void PackingSimulation::finalize(const Box& area) {
   velocity_.assign(n, {});
   force_.assign(n, {});
   insideOther_.assign(n, 0);
+  insideDepth2_.assign(n, 0.0);
+  outsideDepth_.assign(n, 0.0);
   outsideContainer_.assign(n, 0);
   vertexNormal_.assign(n, {});
   segmentNormal_.assign(segmentMesh_.size(), {});
@@ -174,6 +201,32 @@ void PackingSimulation::nearestSkinPointsOf(Vec2 p, Vec2 offset, int image, int 
   });
 }
 
+bool PackingSimulation::nearestFarOwnSkinPoint(int v, const MeshInstance& mesh, Vec2& closest) const {
+  const Vec2 x = position_[v];
+  const int k = v - mesh.vertexBegin, nb = mesh.boundaryCount;
+  // Only nearer than half its clearance at rest: a drawn notch or a neighbouring ear is not a fold.
+  const double reach = std::min(parameters_.cellSize, kSelfClearanceShare * restSelfClearance_[v] * mesh.growth);
+  double best = reach * reach;
+  bool found = false;
+  grid_.forEachNear(x, 1, [&](int s) {
+    if (segmentMesh_[s] != meshOf_[v]) return;
+    const int j = s - mesh.segmentBegin;
+    const int along = std::min(std::abs(j - k), nb - std::abs(j - k));
+    if (along <= kSelfNeighbourhood) return;  // the skin next to v along the ring
+    const int a = segmentEnds_[2 * s], b = segmentEnds_[2 * s + 1];
+    double t;
+    const Vec2 q = closestOnSegment(x, position_[a], position_[b], t);
+    const double d2 = lengthSquared(x - q);
+    if (d2 >= best) return;
+    const Vec2 normal = t <= 0.0 ? vertexNormal_[a] : (t >= 1.0 ? vertexNormal_[b] : segmentNormal_[s]);
+    if (dot(x - q, normal) <= 0.0) return;  // across its own body, not a limb coming from outside
+    best = d2;
+    closest = q;
+    found = true;
+  });
+  return found;
+}
+
 void PackingSimulation::wrapMeshes(std::size_t meshBegin, std::size_t meshEnd) {
   const Vec2 period = domain_.period;
   for (std::size_t m = meshBegin; m < meshEnd; ++m) {
@@ -200,7 +253,12 @@ void PackingSimulation::computeForces(std::size_t vertexBegin, std::size_t verte
     SkinHits near;
     nearestSkinPoints(x, m, near);
     bool inside = false;
-    for (int k = 0; k < near.size() && !inside; ++k) inside = near[k].contains(x);
+    double depth2 = 0.0;
+    for (int k = 0; k < near.size() && !inside; ++k)
+      if (near[k].contains(x)) {
+        inside = true;
+        depth2 = near[k].d2;  // the distance to the skin of the mesh it is in
+      }
     if (inside) {
       // Eq. 4.4: no repulsion; every incident triangle pulls the vertex toward its centroid.
       for (int t : trianglesAt_.of(v)) {
@@ -210,8 +268,28 @@ void PackingSimulation::computeForces(std::size_t vertexBegin, std::size_t verte
       }
     } else {
       for (const SkinHit& hit : near) f += forces::repulsion(x, hit.point, P.repulsionStrength, P.soft);
+      if (P.selfRepulsion > 0.0 && static_cast<int>(v) - mesh.vertexBegin < mesh.boundaryCount) {
+        Vec2 closest;
+        if (nearestFarOwnSkinPoint(static_cast<int>(v), mesh, closest))
+          f += forces::repulsion(x, closest, P.repulsionStrength * P.selfRepulsion, P.soft);
+      }
     }
     insideOther_[v] = inside ? 1 : 0;
+    insideDepth2_[v] = depth2;
+
+    // Anti-inversion: a triangle squeezed below a share of its rest area pushes this vertex
+    // back away from the opposite edge (along the area's gradient) before it folds over.
+    if (P.inversionStrength > 0.0) {
+      const double g2 = mesh.growth * mesh.growth;
+      for (int t : trianglesAt_.of(v)) {
+        const auto& tri = triangles_[t];
+        const int k = tri[0] == static_cast<int>(v) ? 0 : (tri[1] == static_cast<int>(v) ? 1 : 2);
+        const Vec2 a = position_[tri[(k + 1) % 3]], b = position_[tri[(k + 2) % 3]];
+        const double rest = triangleRestArea_[t] * g2, now = 0.5 * cross(a - x, b - x);
+        if (rest > 0.0 && now < kInversionShare * rest)
+          f += Vec2{a.y - b.y, b.x - a.x} * (P.inversionStrength * (kInversionShare * rest - now) / rest);
+      }
+    }
 
     // Eq. 4.3: springs, rest lengths scaled by the mesh's growth.
     for (const SpringEnd& spring : springsAt_.of(v))
@@ -230,6 +308,7 @@ void PackingSimulation::computeForces(std::size_t vertexBegin, std::size_t verte
       }
       // Outside by more than the tolerance: no room to grow (see updateMeshes).
       outsideContainer_[v] = (!q.inside && q.distance > P.outsideTolerance) ? 1 : 0;
+      outsideDepth_[v] = q.inside ? 0.0 : q.distance;
     }
 
     // Eq. 4.6: optional preferred orientation.
@@ -319,12 +398,14 @@ void PackingSimulation::integrate(std::size_t vertexBegin, std::size_t vertexEnd
 void PackingSimulation::updateMeshes(std::size_t meshBegin, std::size_t meshEnd) {
   for (std::size_t m = meshBegin; m < meshEnd; ++m) {
     MeshInstance& mesh = meshes_[m];
-    bool overlapping = false, outside = false;
+    bool overlapping = false, deep = false, outside = false;
     for (int v = mesh.vertexBegin; v < mesh.vertexBegin + mesh.vertexCount; ++v) {
       overlapping |= insideOther_[v] != 0;
+      deep |= insideDepth2_[v] > settleDepth2_ || outsideDepth_[v] * outsideDepth_[v] > settleDepth2_;
       outside |= outsideContainer_[v] != 0;
     }
     mesh.overlapping = overlapping;
+    mesh.deep = deep || meshOnCorner_[m] != 0;  // a reflex corner inside it may reach its art
     mesh.outside = outside || meshOnCorner_[m] != 0;
     double twiceArea = 0.0;
     int nb = mesh.boundaryCount;
@@ -352,7 +433,8 @@ void PackingSimulation::step() {
   // wall keeps growing until its art crosses it).
   double total = 0.0, rest = 0.0;
   for (MeshInstance& mesh : meshes_) {
-    mesh.growth = growthRule_.next(mesh.growth, canGrow(mesh));
+    if (!settling_) mesh.growth = growthRule_.next(mesh.growth, canGrow(mesh));
+    else if (needsSettling(mesh)) mesh.growth = growthRule_.shrunk(mesh.growth);
     total += mesh.area;
     rest += mesh.restArea * mesh.growth * mesh.growth;
   }
@@ -360,6 +442,12 @@ void PackingSimulation::step() {
   restFill_ = (rest + domain_.occupiedArea) / containerArea_;
   ++iteration_;
   assert(allFinite(position_.data(), position_.data() + position_.size()) && "a step left a non-finite position");
+}
+
+int PackingSimulation::unsettledCount() const {
+  int n = 0;
+  for (const MeshInstance& mesh : meshes_) n += needsSettling(mesh) ? 1 : 0;
+  return n;
 }
 
 int PackingSimulation::growingCount() const {

@@ -38,6 +38,9 @@ struct MeshInstance {
   double growth = 1.0;          // g: rest lengths are restLength × g
   bool frozen = false;          // frozen meshes repel others but do not move or grow
   bool overlapping = false;     // some vertex is inside another mesh
+  // Some vertex is deeper than the settle depth inside another mesh or out of the container,
+  // or a reflex container corner is inside it: what the clean-up shrinks.
+  bool deep = false;
   bool outside = false;         // some vertex is outside the container
   double area = 0.0;            // area enclosed by its skin, updated every step
   double restArea = 0.0;        // skin area at growth 1
@@ -76,6 +79,16 @@ class PackingSimulation {
   // force strength × (anchor − x), holding a matched element at its container corner.
   struct Dock { int vertex; Vec2 anchor; };
   void setDocks(std::vector<Dock> docks, double strength) { docks_ = std::move(docks); dockStrength_ = strength; }
+
+  // Growth: Grow (thesis 4.5.1: meshes with room grow) or Settle (the clean-up after a pass:
+  // nothing grows, and a mesh with a vertex deeper than `depth` inside another one, or pushed
+  // out of the container, shrinks a growth step).
+  void grow() { settling_ = false; }
+  void settle(double depth) { settling_ = true; settleDepth2_ = depth * depth; }
+  // Meshes the clean-up still shrinks: not frozen, with a vertex deeper than the settle depth
+  // inside another mesh or beyond the tolerance outside the container.
+  static bool needsSettling(const MeshInstance& m) { return !m.frozen && m.deep; }
+  int unsettledCount() const;
 
   void step();
   // Moves every vertex left outside its container onto the container's boundary, a hair
@@ -123,6 +136,10 @@ class PackingSimulation {
   };
   using SkinHits = NearestHitList<SkinHit, kMaxNeighbours>;
   void nearestSkinPoints(Vec2 p, int excludeMesh, SkinHits& hits) const;
+  // Self-repulsion: the closest point of v's own skin, away from v along the ring, that v
+  // approaches from outside (a limb bending onto its own body), nearer than half the
+  // distance between them at rest and within the cut-off.
+  bool nearestFarOwnSkinPoint(int v, const MeshInstance& mesh, Vec2& closest) const;
   // Periodic domain (tile mode): the hits of p - offset, reported at the clone `image`.
   void nearestSkinPointsOf(Vec2 p, Vec2 offset, int image, int excludeMesh, SkinHits& hits) const;
   bool periodic() const { return domain_.period.x > 0.0 && domain_.period.y > 0.0; }
@@ -138,6 +155,8 @@ class PackingSimulation {
   GrowthRule growthRule_;  // no cap: a mesh grows while it has room
   ThreadPool& pool_;
   bool finalized_ = false;
+  bool settling_ = false;
+  double settleDepth2_ = 0.0;
   int iteration_ = 0;
   double fill_ = 0.0;
   double restFill_ = 0.0;
@@ -147,6 +166,10 @@ class PackingSimulation {
   std::vector<Vec2> position_, velocity_, force_;
   std::vector<int> meshOf_;
   std::vector<std::uint8_t> insideOther_, outsideContainer_;
+  std::vector<double> insideDepth2_;  // squared depth inside the other mesh (0: not inside)
+  std::vector<double> outsideDepth_;  // distance outside the container (0: inside)
+  std::vector<double> triangleRestArea_;  // signed, at growth 1
+  std::vector<double> restSelfClearance_;  // per vertex, at growth 1 (see nearestFarOwnSkinPoint)
   std::vector<Vec2> restDirection_;  // rest offset from the mesh centre, for torsion
   std::vector<Vec2> vertexNormal_;   // outward pseudo-normal (boundary vertices)
   // Springs by vertex; each spring appears once at each end.

@@ -35,6 +35,7 @@ void checkOptions(const RepulsionOptions& o) {
   if (o.stop.stallWindow < 1) throw InputError("--stall-window", "must be at least 1");
   nonNegative(o.stop.stallEpsilon, "--stall-epsilon");
   if (o.stop.maxIterations < 0) throw InputError("--max-iterations", "must not be negative");
+  if (o.stop.settleIterations < 0) throw InputError("--settle-iterations", "must not be negative");
   nonNegative(o.stop.timeLimit, "--time-limit");
   if (!(o.secondary.scale > 0.0 && o.secondary.scale <= 10.0)) throw InputError("--secondary-scale", "must be in (0, 10]");
   nonNegative(o.secondary.minDistance, "--secondary-min-distance");
@@ -236,6 +237,18 @@ StopReason simulate(PackingSimulation& sim, const RepulsionRun& run, const Repul
       });
   report();
   return reason.value_or(StopReason::IterationCap);
+}
+
+int settle(PackingSimulation& sim, const RepulsionRun& run, const RepulsionStopRule& stop) {
+  // Skins are the art offset by half the gap: a vertex less than a quarter of the gap inside
+  // another skin leaves the two arts at least three quarters of the gap apart.
+  constexpr double kSettleDepthShare = 0.25;
+  const int start = sim.iteration();
+  sim.settle(kSettleDepthShare * run.options.gap);
+  const Deadline deadline(run.started, stop.timeLimit);
+  while (sim.iteration() - start < stop.settleIterations && sim.unsettledCount() > 0 && !deadline.passed()) sim.step();
+  sim.grow();
+  return sim.iteration() - start;
 }
 
 Packing collectPacking(const RepulsionRun& run, const PackingSimulation& sim, const std::vector<PreparedElement>& types) {

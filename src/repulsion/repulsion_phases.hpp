@@ -61,6 +61,11 @@ void setUpContainers(const RepulsionRun& run, PackingSimulation& sim);
 // The primary simulation with the seeded meshes, finalized.
 PackingSimulation primarySimulation(const RepulsionRun& run, const Seeding& seeding, ThreadPool& pool);
 
+// The clean-up after a pass (RepulsionStopRule::settleIterations): steps with nothing growing,
+// shrinking each element that is deeper than a quarter of the gap inside another or pushed out
+// of the container, until none is or the cap. Returns the iterations it took.
+int settle(PackingSimulation& sim, const RepulsionRun& run, const RepulsionStopRule& stop);
+
 // Steps until `targetFill`, eq. 4.7 under `stop`, the time limit or the iteration cap
 // (4.5.2). Progress and snapshots count iterations on from `iterationOffset`.
 StopReason simulate(PackingSimulation& sim, const RepulsionRun& run, const RepulsionStopRule& stop, double targetFill,

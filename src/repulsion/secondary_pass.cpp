@@ -98,6 +98,7 @@ void secondaryPass(const RepulsionRun& run, const PackingSimulation& primary, co
     RepulsionStopRule stop = options.stop;
     stop.stallEpsilon *= static_cast<double>(pockets.size()) * secondaryArea / setup.containerArea;
     pass.stopReason = simulate(second, run, stop, options.secondary.targetFill, primaryIterations, callbacks, collect);
+    pass.settleIterations = settle(second, run, stop);
     pass.iterations = second.iteration();
     Packing result = collect();
     if (!artIsClean(result) && second.projectInside() > 0) result = collect();

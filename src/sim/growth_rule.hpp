@@ -20,6 +20,8 @@ class GrowthRule {
 
   // g after one more step of growth.
   double grown(double g) const { return std::min(cap_, g + increment_); }
+  // g after one step of shrinking, never below a tenth of what it was.
+  double shrunk(double g) const { return std::max(0.9 * g, g - increment_); }
   // g after this step: grown if there is room, else unchanged.
   double next(double g, bool room) const { return room ? grown(g) : g; }
   // Whether growth could still change g (it is below the cap).

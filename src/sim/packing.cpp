@@ -25,14 +25,17 @@ std::vector<Region> artOutlines(const Packing& packing) {
   return outlines;
 }
 
+std::vector<Ring> artRings(const std::vector<Shape>& art) {
+  std::vector<Ring> rings;
+  for (const Shape& s : art)
+    if (s.fill)
+      for (const Subpath& sub : s.subpaths) rings.push_back(sub.points);
+  return rings;
+}
+
 std::vector<std::vector<Ring>> artRings(const Packing& packing) {
   std::vector<std::vector<Ring>> rings;
-  for (const PlacedElement& e : packing.elements) {
-    std::vector<Ring>& own = rings.emplace_back();
-    for (const Shape& s : e.art)
-      if (s.fill)
-        for (const Subpath& sub : s.subpaths) own.push_back(sub.points);
-  }
+  for (const PlacedElement& e : packing.elements) rings.push_back(artRings(e.art));
   return rings;
 }
 

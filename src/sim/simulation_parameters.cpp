@@ -14,7 +14,8 @@ void checkSimulationParameters(const SimulationParameters& p) {
       {&P::boundaryStrength, "--k-boundary"},   {&P::edgeStrength, "--k-edge"},
       {&P::negativeSpaceStrength, "--k-negative-space"}, {&P::torsionStrength, "--k-torsion"},
       {&P::soft, "--soft"},                     {&P::growthRate, "--growth-rate"},
-      {&P::cellSize, "--cell-size"},
+      {&P::cellSize, "--cell-size"},           {&P::inversionStrength, "--k-inversion"},
+      {&P::selfRepulsion, "--self-repulsion"},
   };
   for (const auto& [member, option] : nonNegative)
     if (!(p.*member >= 0.0) || !std::isfinite(p.*member)) throw InputError(option, "must be a non-negative number");

@@ -175,5 +175,6 @@ TEST(CliPackFixed, OutsideVerticesAreProjectedBackWhenTheArtIsNotClean) {
   auto report = nlohmann::json::parse(readWholeFile(dir.file("r.json")));
   EXPECT_EQ(report["elements-outside"], 0) << report["problems"];
   EXPECT_EQ(report["overlap-count"], 0) << report["problems"];
-  EXPECT_EQ(report["iterations"], 1599);  // the projection is not a simulation step
+  // The projection is not a simulation step: the total is growth plus the clean-up.
+  EXPECT_EQ(report["iterations"].get<int>() - report["passes"][0]["settle-iterations"].get<int>(), 1565);
 }

@@ -150,3 +150,13 @@ TEST(SelfIntersection, CheckCountsElementsOnce) {
   ASSERT_EQ(check.problems.size(), 2u);
   EXPECT_EQ(check.problems[0], "element 1's outline crosses itself");
 }
+
+TEST(SelfIntersection, RingsDrawnCrossingAreNotFolds) {
+  const Ring eight{{0, 0}, {10, 10}, {10, 0}, {0, 10}};
+  PackingCheck check;
+  // Element 0 was drawn as a figure eight; element 1 was a square and now crosses itself.
+  checkSelfIntersections({{eight}, {eight}}, check, {{eight}, {square(0, 0, 10)}});
+  EXPECT_EQ(check.selfIntersecting, 1);
+  ASSERT_EQ(check.problems.size(), 1u);
+  EXPECT_EQ(check.problems[0], "element 1's outline crosses itself");
+}

@@ -143,11 +143,13 @@ TEST(RigidPreset, KeepsShapesNearlyUndeformedAndOverlapFree) {
   };
   Packing rigidPacking = packRepulsion(scene, library, rigid);
   Packing softPacking = packRepulsion(scene, library, soft);
-  // Measured at k_edg 1000 / 40 / 5: max 0.072 / 0.33 / 0.98, mean 0.0048 / 0.016 / 0.044.
+  // Measured at k_edg 1000 / 40 / 5: max 0.072 / 0.33 / 0.98, mean 0.0048 / 0.016 / 0.044
+  // before the anti-inversion term and self-repulsion, which cap the soft preset's worst
+  // folds: now rigid 0.064 / 0.0053 against soft (k_edg 10) 0.29 / 0.019.
   EXPECT_LT(maxStrain(rigidPacking), 0.1);
   EXPECT_LT(meanStrain(rigidPacking), 0.01);
-  EXPECT_GT(maxStrain(softPacking), 5.0 * maxStrain(rigidPacking));
-  EXPECT_GT(meanStrain(softPacking), 5.0 * meanStrain(rigidPacking));
+  EXPECT_GT(maxStrain(softPacking), 3.0 * maxStrain(rigidPacking));
+  EXPECT_GT(meanStrain(softPacking), 3.0 * meanStrain(rigidPacking));
   PackingCheckOptions check;
   check.areaTolerance = 1e-5 * area(rigidPacking.container);
   PackingCheck result = verifyPacking(artOutlines(rigidPacking), rigidPacking.container, check);

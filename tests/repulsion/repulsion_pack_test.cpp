@@ -47,7 +47,10 @@ TEST(RepulsionPack, BundledExampleReachesTargetWithoutOverlaps) {
   RepulsionOptions options = quickOptions();
   Packing packing = packRepulsion(scene, library, options);
   EXPECT_EQ(packing.stopReason, StopReason::TargetFill);
-  EXPECT_GE(packing.skinFill, options.stop.targetFill);
+  // The clean-up after the stop shrinks what was pressed too deep into a neighbour, so the
+  // final fill may sit a little under the target that stopped the growth.
+  EXPECT_GE(packing.skinFill, options.stop.targetFill - 0.01);
+  EXPECT_GT(packing.passes.front().settleIterations, 0);
   EXPECT_EQ(packing.elements.size(), 10u);
   expectValidPacking(packing);
   for (const PlacedElement& e : packing.elements) EXPECT_GT(e.growth, 0.0);

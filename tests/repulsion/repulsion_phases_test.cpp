@@ -81,6 +81,10 @@ TEST_F(RepulsionPhases, InOrderTheyArePackRepulsion) {
   const StopReason reason = simulate(sim, run, options.stop, options.stop.targetFill, 0, {}, {});
   EXPECT_EQ(reason, StopReason::IterationCap);
   EXPECT_EQ(sim.iteration(), options.stop.maxIterations);
+  const int settled = settle(sim, run, options.stop);
+  EXPECT_GE(settled, 0);
+  EXPECT_LE(settled, options.stop.settleIterations);
+  EXPECT_EQ(sim.iteration(), options.stop.maxIterations + settled);
   const Packing byPhases = collectPrimary(run, sim, seeding, reason);
   EXPECT_TRUE(samePacking(byPhases, packRepulsion(scene, library, options)));
   EXPECT_TRUE(artIsClean(byPhases));

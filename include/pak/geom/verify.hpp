@@ -41,7 +41,10 @@ PackingCheck verifyPacking(const std::vector<Region>& elements, const Region& co
 bool ringSelfIntersects(const Ring& ring);
 
 // Counts the elements whose outline crosses itself (a limb folded over its own body), one
-// problem each: `outlines[i]` holds element i's filled rings as drawn. Clears `check.ok` if any.
-void checkSelfIntersections(const std::vector<std::vector<Ring>>& outlines, PackingCheck& check);
+// problem each: `outlines[i]` holds element i's filled rings as placed. A ring that already
+// crosses itself in `rest[i]` (element i's rings as drawn, when given with the same count) was
+// drawn that way and is not counted. Clears `check.ok` if any.
+void checkSelfIntersections(const std::vector<std::vector<Ring>>& outlines, PackingCheck& check,
+                            const std::vector<std::vector<Ring>>& rest = {});
 
 }  // namespace pak

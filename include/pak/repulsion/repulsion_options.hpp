@@ -18,6 +18,11 @@ struct RepulsionStopRule {
   bool stallOnMeasuredArea = false;
   int maxIterations = 30000;
   double timeLimit = 0.0;    // seconds of wall time from the start of the run; 0: none
+  // The clean-up after a pass stops (docs/repulsionpak.md): nothing grows, and every element
+  // with a vertex deeper than a quarter of the gap inside another one (or outside the
+  // container beyond outsideTolerance) shrinks a growth step,
+  // for at most this many iterations, until none is. 0: none (the thesis).
+  int settleIterations = 1000;
 };
 
 // Secondary elements (4.6), packed when a secondary library is given.

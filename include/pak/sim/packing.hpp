@@ -34,11 +34,12 @@ const char* toString(StopReason reason);
 // One simulation pass: the primary one, then the secondary one when it runs (4.6).
 struct PackingPass {
   int elements = 0;          // elements this pass moved
-  int iterations = 0;
+  int iterations = 0;         // the clean-up's included
   StopReason stopReason = StopReason::IterationCap;
   double seconds = 0.0;      // wall time of the pass, seeding and meshing included
   double skinFill = 0.0;     // at the pass's end; as Packing::skinFill
   double artFill = 0.0;      // at the pass's end; as artFill()
+  int settleIterations = 0;  // the clean-up's (RepulsionStopRule::settleIterations)
 };
 
 struct Packing {
@@ -67,6 +68,7 @@ std::vector<Region> artOutlines(const Packing& packing);
 // Each placed element's filled rings as drawn (its filled shapes' subpaths; strokes are
 // bands, not outlines), for checkSelfIntersections.
 std::vector<std::vector<Ring>> artRings(const Packing& packing);
+std::vector<Ring> artRings(const std::vector<Shape>& art);
 // Total painted area of the elements and the fixed elements over the container area.
 double artFill(const Packing& packing);
 

@@ -23,6 +23,12 @@ struct SimulationParameters {
   // An element with a vertex pushed further than this outside the container stops growing,
   // as one with a vertex inside another element does (thesis: no such rule; use a huge value).
   double outsideTolerance = 0.5;
+  // RepulsionPak: a triangle squeezed below a quarter of its rest area pushes its vertices
+  // apart with this strength, so a thin limb bends instead of folding over (thesis: none, 0).
+  double inversionStrength = 200.0;
+  // RepulsionPak: a far part of an element's own skin (a limb bending onto its body) repels
+  // with this share of k_rpl, so an element does not fold over itself (thesis: none, 0).
+  double selfRepulsion = 1.0;
 };
 
 // Throws InputError naming the option as `pak` spells it (--k-edge, --time-step, …) for a
