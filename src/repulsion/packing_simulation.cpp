@@ -105,7 +105,6 @@ void PackingSimulation::finalize(const Box& area) {
   insideOther_.assign(n, 0);
   insideDepth2_.assign(n, 0.0);
   outsideDepth_.assign(n, 0.0);
-  outsideContainer_.assign(n, 0);
   vertexNormal_.assign(n, {});
   segmentNormal_.assign(segmentMesh_.size(), {});
   meshCentre_.assign(meshes_.size(), {});
@@ -245,7 +244,7 @@ void PackingSimulation::computeForces(std::size_t vertexBegin, std::size_t verte
   for (std::size_t v = vertexBegin; v < vertexEnd; ++v) {
     const int m = meshOf_[v];
     const MeshInstance& mesh = meshes_[m];
-    if (mesh.frozen) { force_[v] = {}; insideOther_[v] = 0; outsideContainer_[v] = 0; continue; }
+    if (mesh.frozen) { force_[v] = {}; insideOther_[v] = 0; outsideDepth_[v] = 0.0; continue; }
     const Vec2 x = position_[v];
     Vec2 f;
 
@@ -298,7 +297,7 @@ void PackingSimulation::computeForces(std::size_t vertexBegin, std::size_t verte
     // Eq. 4.5: back into the container (its own one, when there are several). A periodic tile
     // has no walls (thesis 4.8).
     if (periodic()) {
-      outsideContainer_[v] = 0;
+      outsideDepth_[v] = 0.0;
     } else {
       const RegionIndex& region = parts_.empty() ? container_ : *parts_[mesh.container];
       RegionIndex::Query q = region.query(x, false);
@@ -307,7 +306,6 @@ void PackingSimulation::computeForces(std::size_t vertexBegin, std::size_t verte
         f += forces::boundary(x, q.closest, P.boundaryStrength);
       }
       // Outside by more than the tolerance: no room to grow (see updateMeshes).
-      outsideContainer_[v] = (!q.inside && q.distance > P.outsideTolerance) ? 1 : 0;
       outsideDepth_[v] = q.inside ? 0.0 : q.distance;
     }
 
@@ -402,7 +400,7 @@ void PackingSimulation::updateMeshes(std::size_t meshBegin, std::size_t meshEnd)
     for (int v = mesh.vertexBegin; v < mesh.vertexBegin + mesh.vertexCount; ++v) {
       overlapping |= insideOther_[v] != 0;
       deep |= insideDepth2_[v] > settleDepth2_ || outsideDepth_[v] * outsideDepth_[v] > settleDepth2_;
-      outside |= outsideContainer_[v] != 0;
+      outside |= outsideDepth_[v] > parameters_.outsideTolerance;
     }
     mesh.overlapping = overlapping;
     mesh.deep = deep || meshOnCorner_[m] != 0;  // a reflex corner inside it may reach its art

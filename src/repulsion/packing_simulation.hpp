@@ -111,7 +111,7 @@ class PackingSimulation {
   const std::vector<Vec2>& forces() const { return force_; }
   static bool canGrow(const MeshInstance& m) { return !m.frozen && !m.overlapping && !m.outside; }
   bool vertexInsideOther(int v) const { return insideOther_[v] != 0; }
-  bool vertexOutsideContainer(int v) const { return outsideContainer_[v] != 0; }
+  bool vertexOutsideContainer(int v) const { return outsideDepth_[v] > parameters_.outsideTolerance; }
   std::size_t springCount() const { return springsAt_.entries.size() / 2; }
   const SimulationParameters& parameters() const { return parameters_; }
 
@@ -165,9 +165,9 @@ class PackingSimulation {
   // Per vertex (hot).
   std::vector<Vec2> position_, velocity_, force_;
   std::vector<int> meshOf_;
-  std::vector<std::uint8_t> insideOther_, outsideContainer_;
+  std::vector<std::uint8_t> insideOther_;
   std::vector<double> insideDepth2_;  // squared depth inside the other mesh (0: not inside)
-  std::vector<double> outsideDepth_;  // distance outside the container (0: inside)
+  std::vector<double> outsideDepth_;  // distance outside the container (0: inside); past outsideTolerance it blocks growth
   std::vector<double> triangleRestArea_;  // signed, at growth 1
   std::vector<double> restSelfClearance_;  // per vertex, at growth 1 (see nearestFarOwnSkinPoint)
   std::vector<Vec2> restDirection_;  // rest offset from the mesh centre, for torsion
