@@ -86,6 +86,8 @@ PackingCheck verifyPacking(const std::vector<Region>& elements, const Region& co
   std::sort(overlaps.begin(), overlaps.end(),
             [](const Overlap& x, const Overlap& y) { return x.a < y.a || (x.a == y.a && x.b < y.b); });
   for (const Overlap& o : overlaps) {
+    check.offending.push_back(o.a);
+    check.offending.push_back(o.b);
     ++check.overlappingPairs;
     check.problems.push_back("elements " + std::to_string(o.a) + " and " + std::to_string(o.b) + " overlap by " +
                              describe(o.area));
@@ -95,23 +97,28 @@ PackingCheck verifyPacking(const std::vector<Region>& elements, const Region& co
     if (boxes[e].empty()) continue;
     const double outside = area(subtract(elements[e], container));
     if (outside > tolerance) {
+      check.offending.push_back(e);
       ++check.elementsOutside;
       check.outsideArea += outside;
       check.problems.push_back("element " + std::to_string(e) + " lies outside the container (or in a hole) by " +
                                describe(outside) + " of its area " + describe(area(elements[e])));
     }
   }
+  std::sort(check.offending.begin(), check.offending.end());
+  check.offending.erase(std::unique(check.offending.begin(), check.offending.end()), check.offending.end());
   check.ok = check.overlappingPairs == 0 && check.elementsOutside == 0;
   return check;
 }
 
-bool ringSelfIntersects(const Ring& input) {
+bool ringSelfIntersects(const Ring& input) { return ringSelfCrossing(input).has_value(); }
+
+std::optional<Vec2> ringSelfCrossing(const Ring& input) {
   Ring ring;
   for (Vec2 p : input)
     if (ring.empty() || !(p == ring.back())) ring.push_back(p);
   while (ring.size() > 1 && ring.front() == ring.back()) ring.pop_back();
   const std::size_t n = ring.size();
-  if (n < 4) return false;
+  if (n < 4) return std::nullopt;
   // Sweep the edges by their smallest x; only edges whose x ranges overlap are compared.
   std::vector<std::size_t> order(n);
   std::iota(order.begin(), order.end(), std::size_t{0});
@@ -131,10 +138,13 @@ bool ringSelfIntersects(const Ring& input) {
       if (f == (e + 1) % n || e == (f + 1) % n) continue;  // neighbours share a vertex
       const Vec2 c = ring[f], d = ring[(f + 1) % n];
       if (std::max(c.y, d.y) < eMinY || std::min(c.y, d.y) > eMaxY) continue;
-      if (side(a, b, c) * side(a, b, d) < 0 && side(c, d, a) * side(c, d, b) < 0) return true;
+      if (side(a, b, c) * side(a, b, d) < 0 && side(c, d, a) * side(c, d, b) < 0) {
+        const double t = cross(c - a, d - c) / cross(b - a, d - c);
+        return a + (b - a) * t;
+      }
     }
   }
-  return false;
+  return std::nullopt;
 }
 
 void checkSelfIntersections(const std::vector<std::vector<Ring>>& outlines, PackingCheck& check,

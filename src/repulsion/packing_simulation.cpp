@@ -11,6 +11,8 @@ namespace pak {
 namespace {
 
 constexpr std::size_t kVertexGrain = 256;
+// Pocket pressure skips skin vertices turning inward by more than this (sine of the turn).
+constexpr double kPocketReflexTurn = 0.2;
 // A triangle pushes back once squeezed below this share of its rest area (anti-inversion).
 constexpr double kInversionShare = 0.25;
 // Self-repulsion: skin segments fewer than this many away along the ring are v's own side.
@@ -110,6 +112,7 @@ void PackingSimulation::finalize(const Box& area) {
   meshCentre_.assign(meshes_.size(), {});
   meshOnCorner_.assign(meshes_.size(), 0);
   meshTorsionTurn_.assign(meshes_.size(), Vec2{1.0, 0.0});
+  vertexCluster_.assign(n, -1);
 
   // Springs by vertex, in spring order at each end (deterministic sums).
   springsAt_ = buildVertexAdjacency<SpringEnd>(n, [&](auto&& emit) {
@@ -226,6 +229,86 @@ bool PackingSimulation::nearestFarOwnSkinPoint(int v, const MeshInstance& mesh, 
   return found;
 }
 
+Vec2 PackingSimulation::pocketPressure(int v, const MeshInstance& mesh, const SkinHits& near) const {
+  const SimulationParameters& P = parameters_;
+  const double clearance = P.pocketClearance, reach = P.cellSize;
+  double free2 = reach * reach;
+  for (const SkinHit& hit : near) free2 = std::min(free2, hit.d2);
+  if (free2 <= clearance * clearance) return {};  // in a channel, the common case
+  const Vec2 x = position_[v];
+  const int k = v - mesh.vertexBegin, nb = mesh.boundaryCount;
+  // Not at a reflex vertex: pushing the two sides of a notch outward folds them over it.
+  const Vec2 before = position_[mesh.vertexBegin + (k + nb - 1) % nb], after = position_[mesh.vertexBegin + (k + 1) % nb];
+  if (cross(normalized(x - before), normalized(after - x)) < -kPocketReflexTurn) return {};
+  // A drawn notch (between two ears, say) is not a pocket: the element's own skin away from v
+  // along the ring counts as a neighbour.
+  grid_.forEachNear(x, 1, [&](int s) {
+    if (segmentMesh_[s] != meshOf_[v]) return;
+    const int j = s - mesh.segmentBegin;
+    if (std::min(std::abs(j - k), nb - std::abs(j - k)) <= kSelfNeighbourhood) return;
+    double t;
+    const Vec2 q = closestOnSegment(x, position_[segmentEnds_[2 * s]], position_[segmentEnds_[2 * s + 1]], t);
+    free2 = std::min(free2, lengthSquared(x - q));
+  });
+  double free = std::sqrt(free2);
+  if (free <= clearance) return {};
+  if (!periodic()) {
+    const RegionIndex& region = parts_.empty() ? container_ : *parts_[mesh.container];
+    if (region.insideDistanceBound(x) < free) {  // the wall may be nearer than the others
+      const RegionIndex::Query q = region.query(x, true);
+      if (!q.inside) return {};
+      free = std::min(free, q.distance);
+      if (free <= clearance) return {};
+    }
+  }
+  return vertexNormal_[v] * (P.pocketPressure * std::min(1.0, (free - clearance) / (reach - clearance)));
+}
+
+void PackingSimulation::restoreAround(int m, Vec2 point, double radius, double strength) {
+  const MeshInstance& mesh = meshes_[m];
+  RestoreCluster cluster{static_cast<int>(clusterVertices_.size()), 0, {}, {}, {1.0, 0.0}, strength};
+  for (int v = mesh.vertexBegin; v < mesh.vertexBegin + mesh.vertexCount; ++v) {
+    if (lengthSquared(position_[v] - point) > radius * radius) continue;
+    if (vertexCluster_[v] >= 0) {
+      double& held = clusters_[vertexCluster_[v]].strength;
+      held = std::max(held, strength);
+      continue;
+    }
+    vertexCluster_[v] = static_cast<int>(clusters_.size());
+    clusterVertices_.push_back(v);
+    cluster.restMean += restDirection_[v];
+  }
+  cluster.end = static_cast<int>(clusterVertices_.size());
+  if (cluster.end == cluster.begin) return;
+  cluster.restMean = cluster.restMean / static_cast<double>(cluster.end - cluster.begin);
+  clusters_.push_back(cluster);
+}
+
+void PackingSimulation::fitClusters() {
+  for (RestoreCluster& c : clusters_) {
+    Vec2 centre;
+    for (int k = c.begin; k < c.end; ++k) centre += position_[clusterVertices_[k]];
+    c.centre = centre / static_cast<double>(c.end - c.begin);
+    // The rotation that best fits the rest offsets to the current ones (2-D shape matching).
+    double along = 0.0, across = 0.0;
+    for (int k = c.begin; k < c.end; ++k) {
+      const int v = clusterVertices_[k];
+      const Vec2 q = restDirection_[v] - c.restMean, p = position_[v] - c.centre;
+      along += dot(q, p);
+      across += cross(q, p);
+    }
+    const double turn = std::atan2(across, along);
+    c.turn = {std::cos(turn), std::sin(turn)};
+  }
+}
+
+void PackingSimulation::grow() {
+  settling_ = false;
+  for (int v : clusterVertices_) vertexCluster_[v] = -1;
+  clusterVertices_.clear();
+  clusters_.clear();
+}
+
 void PackingSimulation::wrapMeshes(std::size_t meshBegin, std::size_t meshEnd) {
   const Vec2 period = domain_.period;
   for (std::size_t m = meshBegin; m < meshEnd; ++m) {
@@ -272,6 +355,8 @@ void PackingSimulation::computeForces(std::size_t vertexBegin, std::size_t verte
         if (nearestFarOwnSkinPoint(static_cast<int>(v), mesh, closest))
           f += forces::repulsion(x, closest, P.repulsionStrength * P.selfRepulsion, P.soft);
       }
+      if (P.pocketPressure > 0.0 && static_cast<int>(v) - mesh.vertexBegin < mesh.boundaryCount && !canGrow(mesh))
+        f += pocketPressure(static_cast<int>(v), mesh, near);
     }
     insideOther_[v] = inside ? 1 : 0;
     insideDepth2_[v] = depth2;
@@ -288,6 +373,14 @@ void PackingSimulation::computeForces(std::size_t vertexBegin, std::size_t verte
         if (rest > 0.0 && now < kInversionShare * rest)
           f += Vec2{a.y - b.y, b.x - a.x} * (P.inversionStrength * (kInversionShare * rest - now) / rest);
       }
+    }
+
+    // Unfolding: toward the best-fit rest shape, which does not cross itself.
+    if (vertexCluster_[v] >= 0) {
+      const RestoreCluster& c = clusters_[vertexCluster_[v]];
+      const Vec2 q = (restDirection_[v] - c.restMean) * mesh.growth, t = c.turn;
+      const Vec2 target = c.centre + Vec2{q.x * t.x - q.y * t.y, q.x * t.y + q.y * t.x};
+      f += (target - x) * c.strength;
     }
 
     // Eq. 4.3: springs, rest lengths scaled by the mesh's growth.
@@ -320,6 +413,17 @@ void PackingSimulation::computeForces(std::size_t vertexBegin, std::size_t verte
     }
 
     force_[v] = f;
+  }
+}
+
+void PackingSimulation::contractMesh(int m, double factor) {
+  const MeshInstance& mesh = meshes_[m];
+  Vec2 centre;
+  for (int v = mesh.vertexBegin; v < mesh.vertexBegin + mesh.vertexCount; ++v) centre += position_[v];
+  centre = centre / static_cast<double>(mesh.vertexCount);
+  for (int v = mesh.vertexBegin; v < mesh.vertexBegin + mesh.vertexCount; ++v) {
+    position_[v] = centre + (position_[v] - centre) * factor;
+    velocity_[v] = Vec2{};
   }
 }
 
@@ -420,6 +524,7 @@ void PackingSimulation::step() {
   }
   grid_.rebuild(position_.data(), segmentEnds_.data(), segmentMesh_.size());
   pool_.parallelFor(meshes_.size(), 4, [this](std::size_t b, std::size_t e) { prepareSkins(b, e); });
+  fitClusters();
   pool_.parallelFor(position_.size(), kVertexGrain, [this](std::size_t b, std::size_t e) { computeForces(b, e); });
   applyCornerForces();
   if (!docks_.empty()) applyDockForces();

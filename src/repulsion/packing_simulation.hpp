@@ -3,6 +3,7 @@
 // arrays, forces computed from a frozen snapshot of positions (Jacobi) in parallel, then the
 // shared explicit Euler step (sim/explicit_euler.hpp), then growth (sim/growth_rule.hpp).
 // Nothing is allocated inside `step`.
+#include <algorithm>
 #include <array>
 #include <cassert>
 #include <cstdint>
@@ -83,11 +84,17 @@ class PackingSimulation {
   // Growth: Grow (thesis 4.5.1: meshes with room grow) or Settle (the clean-up after a pass:
   // nothing grows, and a mesh with a vertex deeper than `depth` inside another one, or pushed
   // out of the container, shrinks a growth step).
-  void grow() { settling_ = false; }
+  void grow();
   void settle(double depth) { settling_ = true; settleDepth2_ = depth * depth; }
   // Meshes the clean-up still shrinks: not frozen, with a vertex deeper than the settle depth
   // inside another mesh or beyond the tolerance outside the container.
   static bool needsSettling(const MeshInstance& m) { return !m.frozen && m.deep; }
+  // The clean-up's unfolding: until `grow`, the vertices of `mesh` within `radius` of `point`
+  // are also pulled toward their rest shape, rotated and scaled to fit them best, with
+  // `strength` per unit of distance. Vertices already so held stay in their group, which is
+  // held at least as strongly from then on.
+  void restoreAround(int mesh, Vec2 point, double radius, double strength);
+
   int unsettledCount() const;
 
   void step();
@@ -95,6 +102,9 @@ class PackingSimulation {
   // inside (the boundary force is a penalty, so a pressed vertex rests slightly outside).
   // Frozen meshes and periodic runs are left alone. Returns how many vertices moved.
   int projectInside();
+  // Scales the mesh's vertex positions about their mean by `factor` (the last resort of the
+  // art clean-up: a tip left across the wall, or a sliver of overlap, between two vertices).
+  void contractMesh(int mesh, double factor);
 
   // Skin area of all meshes over the container area.
   double fill() const { return fill_; }
@@ -140,6 +150,8 @@ class PackingSimulation {
   // approaches from outside (a limb bending onto its own body), nearer than half the
   // distance between them at rest and within the cut-off.
   bool nearestFarOwnSkinPoint(int v, const MeshInstance& mesh, Vec2& closest) const;
+  // Outward push on a skin vertex bordering a pocket (SimulationParameters::pocketPressure).
+  Vec2 pocketPressure(int v, const MeshInstance& mesh, const SkinHits& near) const;
   // Periodic domain (tile mode): the hits of p - offset, reported at the clone `image`.
   void nearestSkinPointsOf(Vec2 p, Vec2 offset, int image, int excludeMesh, SkinHits& hits) const;
   bool periodic() const { return domain_.period.x > 0.0 && domain_.period.y > 0.0; }
@@ -187,6 +199,17 @@ class PackingSimulation {
   std::vector<const RegionIndex*> parts_;  // empty: every mesh in `container_`
   OrientationRamp orientationRamp_;
   std::vector<Vec2> meshTorsionTurn_;      // (cos, sin) from the added angle to the field's
+  // Unfolding (restoreAround): groups of vertices held to their best-fit rest shape.
+  struct RestoreCluster {
+    int begin, end;     // its vertices in clusterVertices_
+    Vec2 restMean;      // mean rest offset of its vertices
+    Vec2 centre, turn;  // this step: mean position and (cos, sin) of the best-fit rotation
+    double strength;
+  };
+  std::vector<RestoreCluster> clusters_;
+  std::vector<int> clusterVertices_;
+  std::vector<int> vertexCluster_;  // -1: none
+  void fitClusters();
   std::vector<Dock> docks_;
   double dockStrength_ = 0.0;
   SegmentGrid grid_;

@@ -25,7 +25,7 @@ Packing packRepulsion(const Scene& scene, const Library& library, const Library&
   PackingSimulation sim = primarySimulation(run, seeding, pool);
   const StopReason reason = simulate(sim, run, options.stop, options.stop.targetFill, 0, callbacks,
                                      [&] { return collectPacking(run, sim, run.types); });
-  const int settled = settle(sim, run, options.stop);
+  const int settled = settle(sim, run, options.stop, run.types);
   Packing packing = collectPrimary(run, sim, seeding, reason);
   packing.passes.back().settleIterations = settled;
   if (!secondaryLibrary.empty()) secondaryPass(run, sim, secondaryLibrary, pool, callbacks, packing);

@@ -239,14 +239,58 @@ StopReason simulate(PackingSimulation& sim, const RepulsionRun& run, const Repul
   return reason.value_or(StopReason::IterationCap);
 }
 
-int settle(PackingSimulation& sim, const RepulsionRun& run, const RepulsionStopRule& stop) {
+std::vector<Fold> foldedMeshes(const PackingSimulation& sim, const std::vector<PreparedElement>& types) {
+  std::vector<Fold> folds;
+  std::vector<Vec2> artPoints;
+  Ring ring;
+  for (std::size_t m = 0; m < sim.meshes().size(); ++m) {
+    const MeshInstance& mesh = sim.meshes()[m];
+    if (mesh.frozen) continue;
+    const PreparedElement& type = types[mesh.type];
+    replayArt(type.mesh, sim.positions().data() + mesh.vertexBegin, artPoints);
+    std::size_t k = 0;
+    for (const Shape& shape : type.art)
+      for (const Subpath& sub : shape.subpaths) {
+        ring.assign(artPoints.begin() + static_cast<std::ptrdiff_t>(k),
+                    artPoints.begin() + static_cast<std::ptrdiff_t>(k + sub.points.size()));
+        k += sub.points.size();
+        if (!shape.fill) continue;
+        // A ring drawn crossing itself (petals drawn as one ring) is not a fold.
+        if (const auto crossing = ringSelfCrossing(ring); crossing && !ringSelfIntersects(sub.points))
+          folds.push_back({static_cast<int>(m), *crossing});
+      }
+  }
+  return folds;
+}
+
+int settle(PackingSimulation& sim, const RepulsionRun& run, const RepulsionStopRule& stop,
+           const std::vector<PreparedElement>& types) {
   // Skins are the art offset by half the gap: a vertex less than a quarter of the gap inside
   // another skin leaves the two arts at least three quarters of the gap apart.
   constexpr double kSettleDepthShare = 0.25;
+  // Unfolding rounds, each this long: the mesh around each crossing of an art outline is pulled
+  // toward its rest shape, twice as hard each round.
+  constexpr int kArtRounds = 4, kArtRoundIterations = 100;
+  constexpr double kUnfoldRadius = 1.5;  // × the neighbour cell: the mesh around a crossing
   const int start = sim.iteration();
   sim.settle(kSettleDepthShare * run.options.gap);
   const Deadline deadline(run.started, stop.timeLimit);
-  while (sim.iteration() - start < stop.settleIterations && sim.unsettledCount() > 0 && !deadline.passed()) sim.step();
+  auto left = [&] { return stop.settleIterations - (sim.iteration() - start); };
+  auto shrink = [&] {
+    while (left() > 0 && sim.unsettledCount() > 0 && !deadline.passed()) sim.step();
+  };
+  shrink();
+  if (sim.parameters().unfoldStrength > 0.0)
+    for (int round = 0; round < kArtRounds && left() > 0 && !deadline.passed(); ++round) {
+      const std::vector<Fold> folds = foldedMeshes(sim, types);
+      if (folds.empty()) break;
+      // Gently first: a fold still there a round later is held twice as hard.
+      const double strength = std::ldexp(sim.parameters().unfoldStrength, round);
+      for (const Fold& fold : folds)
+        sim.restoreAround(fold.mesh, fold.at, kUnfoldRadius * sim.parameters().cellSize, strength);
+      for (int i = 0; i < kArtRoundIterations && left() > 0 && !deadline.passed(); ++i) sim.step();
+      shrink();
+    }
   sim.grow();
   return sim.iteration() - start;
 }
@@ -295,6 +339,39 @@ Packing collectPacking(const RepulsionRun& run, const PackingSimulation& sim, co
   return packing;
 }
 
+std::vector<std::size_t> artOffenders(const Packing& packing) {
+  std::vector<Region> checked = artOutlines(packing);
+  const std::size_t elements = checked.size();
+  if (!packing.fixedArt.empty()) checked.push_back(packing.fixedArt);
+  PackingCheckOptions options;
+  options.areaTolerance = 1e-6 * area(packing.container);
+  std::vector<std::size_t> offending = verifyPacking(checked, packing.container, options).offending;
+  std::erase_if(offending, [&](std::size_t e) { return e >= elements; });  // the fixed art
+  return offending;
+}
+
+Packing cleanArt(const RepulsionRun& run, PackingSimulation& sim, const std::vector<PreparedElement>& types) {
+  // Each round contracts every offending element by half a percent about its centre, at most
+  // 3 % in all: what is left across the wall or a neighbour between two mesh vertices.
+  constexpr int kContractRounds = 6;
+  constexpr double kContraction = 0.995;
+  Packing packing = collectPacking(run, sim, types);
+  if (isTiled(run.period)) return packing;
+  if (!artIsClean(packing) && sim.projectInside() > 0) packing = collectPacking(run, sim, types);
+  for (int round = 0; round < kContractRounds; ++round) {
+    const std::vector<std::size_t> offending = artOffenders(packing);
+    bool moved = false;
+    for (std::size_t e : offending)
+      if (!sim.meshes()[e].frozen) {
+        sim.contractMesh(static_cast<int>(e), kContraction);
+        moved = true;
+      }
+    if (!moved) break;
+    packing = collectPacking(run, sim, types);
+  }
+  return packing;
+}
+
 bool artIsClean(const Packing& packing) {
   std::vector<Region> checked = artOutlines(packing);
   if (!packing.fixedArt.empty()) checked.push_back(packing.fixedArt);
@@ -304,8 +381,7 @@ bool artIsClean(const Packing& packing) {
 }
 
 Packing collectPrimary(const RepulsionRun& run, PackingSimulation& sim, const Seeding& seeding, StopReason reason) {
-  Packing packing = collectPacking(run, sim, run.types);
-  if (!isTiled(run.period) && !artIsClean(packing) && sim.projectInside() > 0) packing = collectPacking(run, sim, run.types);
+  Packing packing = cleanArt(run, sim, run.types);
   packing.stopReason = reason;
   packing.containers = run.setup.containers.regions;
   if (seeding.docking) {

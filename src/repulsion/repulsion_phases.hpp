@@ -61,10 +61,17 @@ void setUpContainers(const RepulsionRun& run, PackingSimulation& sim);
 // The primary simulation with the seeded meshes, finalized.
 PackingSimulation primarySimulation(const RepulsionRun& run, const Seeding& seeding, ThreadPool& pool);
 
-// The clean-up after a pass (RepulsionStopRule::settleIterations): steps with nothing growing,
-// shrinking each element that is deeper than a quarter of the gap inside another or pushed out
-// of the container, until none is or the cap. Returns the iterations it took.
-int settle(PackingSimulation& sim, const RepulsionRun& run, const RepulsionStopRule& stop);
+// The clean-up after a pass, at most RepulsionStopRule::settleIterations steps with nothing
+// growing: each element deeper than a quarter of the gap inside another or pushed out of the
+// container shrinks until none is; then, while some element's art crosses itself, a few rounds
+// that pull the mesh around each crossing toward its rest shape
+// (SimulationParameters::unfoldStrength) and shrink again what that pushed in. Returns the
+// iterations it took.
+int settle(PackingSimulation& sim, const RepulsionRun& run, const RepulsionStopRule& stop,
+           const std::vector<PreparedElement>& types);
+// Each filled art ring of a non-frozen mesh that crosses itself, replayed, where it is not drawn so.
+struct Fold { int mesh; Vec2 at; };
+std::vector<Fold> foldedMeshes(const PackingSimulation& sim, const std::vector<PreparedElement>& types);
 
 // Steps until `targetFill`, eq. 4.7 under `stop`, the time limit or the iteration cap
 // (4.5.2). Progress and snapshots count iterations on from `iterationOffset`.
@@ -77,6 +84,12 @@ Packing collectPacking(const RepulsionRun& run, const PackingSimulation& sim, co
 // Whether no element's art overlaps another's or the fixed art, or leaves the container, by
 // more than verifyPacking's tolerance (as `pak pack` checks it).
 bool artIsClean(const Packing& packing);
+// The elements whose art overlaps another's or the fixed art, or leaves the container, by
+// more than verifyPacking's tolerance.
+std::vector<std::size_t> artOffenders(const Packing& packing);
+// The packing after the art clean-up: vertices left outside projected in, then what still
+// overlaps or leaves the container contracted a little (PackingSimulation::contractMesh).
+Packing cleanArt(const RepulsionRun& run, PackingSimulation& sim, const std::vector<PreparedElement>& types);
 // The primary pass's packing: art clean (vertices left outside projected in), statistics set.
 Packing collectPrimary(const RepulsionRun& run, PackingSimulation& sim, const Seeding& seeding, StopReason reason);
 

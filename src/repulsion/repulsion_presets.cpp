@@ -7,8 +7,8 @@ namespace pak {
 const std::vector<RepulsionPreset>& repulsionPresets() {
   static const std::vector<RepulsionPreset> presets{
       {.name = "default",
-       .description = "Pak's tuned strengths (k_rpl 80, k_ovr 80, k_bdr 300, k_edg 40, negative space 10)",
-       .simulation = {},
+       .description = "Pak's tuned strengths (k_rpl 80, k_ovr 80, k_bdr 300, k_edg 20, negative space 10, pocket pressure 1500)",
+       .simulation = repulsionSimulationDefaults(),
        .stop = {}},
       // Thesis 6.4 changes only the edge and shear springs, not the negative-space ones. Its
       // k_edg 5 tears elements apart with our boundary strength (overlaps and limbs outside the
@@ -24,9 +24,10 @@ const std::vector<RepulsionPreset>& repulsionPresets() {
       // the cap then count in simulated time, not iterations: the default rule's window 100,
       // ε 3e-5 and cap 30000 at Δt 0.1, scaled by 0.04 / 0.1 (else the slower per-iteration
       // growth reads as a stall).
+      // No pocket pressure: it would bend what is meant to keep its shape.
       {.name = "rigid",
-       .description = "k_edg 1000 with time step 0.04 (stable): elements keep their shapes (thesis 6.4's rigid end)",
-       .simulation = {.edgeStrength = 1000.0, .timeStep = 0.04},
+       .description = "k_edg 1000 with time step 0.04 (stable), no pocket pressure: elements keep their shapes (thesis 6.4's rigid end)",
+       .simulation = {.edgeStrength = 1000.0, .timeStep = 0.04, .pocketPressure = 0.0},
        .stop = {.stallWindow = 250, .stallEpsilon = 3e-5 * (0.04 / 0.1), .maxIterations = 75000}},
   };
   return presets;

@@ -82,8 +82,7 @@ void secondaryPass(const RepulsionRun& run, const PackingSimulation& primary, co
     setUpContainers(run, second);
     second.finalize(run.simulationArea);
     const int primaryIterations = primary.iteration();
-    auto collect = [&] {
-      Packing p = collectPacking(run, second, types);
+    auto relabel = [&](Packing p) {
       p.iterations += primaryIterations;
       for (PlacedElement& e : p.elements)
         if (e.libraryIndex >= firstSecondary) {
@@ -92,16 +91,16 @@ void secondaryPass(const RepulsionRun& run, const PackingSimulation& primary, co
         }
       return p;
     };
+    auto collect = [&] { return relabel(collectPacking(run, second, types)); };
     // Eq. 4.7 with ε scaled by the pass's nominal area over the primaries' (the free area):
     // a few small elements change the fill far less per iteration than the primaries did, so
     // the unscaled ε would stop them before they grow (see docs/secondary-fixed-rigid.md).
     RepulsionStopRule stop = options.stop;
     stop.stallEpsilon *= static_cast<double>(pockets.size()) * secondaryArea / setup.containerArea;
     pass.stopReason = simulate(second, run, stop, options.secondary.targetFill, primaryIterations, callbacks, collect);
-    pass.settleIterations = settle(second, run, stop);
+    pass.settleIterations = settle(second, run, stop, types);
     pass.iterations = second.iteration();
-    Packing result = collect();
-    if (!artIsClean(result) && second.projectInside() > 0) result = collect();
+    Packing result = relabel(cleanArt(run, second, types));
     packing.elements = std::move(result.elements);
     packing.iterations = result.iterations;
     packing.skinFill = result.skinFill;

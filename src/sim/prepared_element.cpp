@@ -1,6 +1,7 @@
 #include "sim/prepared_element.hpp"
 
 #include "pak/error.hpp"
+#include "pak/geom/hairline_cusps.hpp"
 
 namespace pak {
 
@@ -14,6 +15,10 @@ PreparedElement prepareElement(const ElementArt& element, double scale, const El
     for (Subpath& sub : shape.subpaths)
       for (Vec2& p : sub.points) p = (p - centre) * scale;
   }
+  // A cusp drawn as a hairline (the MDI rabbit's ear touching its head) would cross itself as
+  // soon as the mesh bends; a fifth of a canonical unit is below a pixel at 1000 px.
+  constexpr double kHairlineWidth = 0.2;
+  removeHairlineCusps(prepared.art, kHairlineWidth);
   prepared.outline = transformed(element.outline, scale, -centre * scale);
   try {
     prepared.mesh = buildElementMesh(prepared.art, prepared.outline, meshOptions);

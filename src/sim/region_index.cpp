@@ -67,6 +67,32 @@ RegionIndex::RegionIndex(const Region& input, double cellSize) : cell_(cellSize)
       cellState_[c] = pointInRegion(centre, region) ? kInside : kOutside;
     }
   }
+  // Two chamfer passes give the exact Chebyshev distance to the nearest crossed cell.
+  const int far = nx_ + ny_;
+  cellsToBoundary_.assign(cellState_.size(), far);
+  for (std::size_t c = 0; c < cellState_.size(); ++c)
+    if (cellState_[c] == kCrossed) cellsToBoundary_[c] = 0;
+  auto relax = [&](int i, int j, int di, int dj) {
+    const int ni = i + di, nj = j + dj;
+    if (ni < 0 || nj < 0 || ni >= nx_ || nj >= ny_) return;
+    int& here = cellsToBoundary_[cellIndex(i, j)];
+    here = std::min(here, cellsToBoundary_[cellIndex(ni, nj)] + 1);
+  };
+  for (int j = 0; j < ny_; ++j)
+    for (int i = 0; i < nx_; ++i) { relax(i, j, -1, 0); relax(i, j, -1, -1); relax(i, j, 0, -1); relax(i, j, 1, -1); }
+  for (int j = ny_ - 1; j >= 0; --j)
+    for (int i = nx_ - 1; i >= 0; --i) { relax(i, j, 1, 0); relax(i, j, 1, 1); relax(i, j, 0, 1); relax(i, j, -1, 1); }
+}
+
+double RegionIndex::insideDistanceBound(Vec2 p) const {
+  if (segments_.empty() || !std::isfinite(p.x) || !std::isfinite(p.y)) return 0.0;
+  const double fi = std::floor((p.x - origin_.x) / cell_), fj = std::floor((p.y - origin_.y) / cell_);
+  if (!(fi >= 0 && fj >= 0 && fi < nx_ && fj < ny_)) return 0.0;
+  const int c = cellIndex(static_cast<int>(fi), static_cast<int>(fj));
+  if (cellState_[c] != kInside) return 0.0;
+  // The nearest crossed cell r rings away is r - 1 whole cells from any point of this one.
+  const int r = cellsToBoundary_[c];
+  return std::max(0, r - 1) * cell_;
 }
 
 RegionIndex::Query RegionIndex::closestAround(Vec2 p) const {

@@ -24,6 +24,10 @@ class RegionIndex {
   // Inside test; the nearest boundary point is computed only when needed: always if
   // `wantClosest`, else only for points in cells the boundary crosses.
   Query query(Vec2 p, bool wantClosest) const;
+  // For p inside the region, a lower bound on its distance to the boundary, from the grid
+  // alone; 0 near the boundary, outside or off the grid. Lets a caller skip an exact query
+  // when it only asks "inside and farther than d?".
+  double insideDistanceBound(Vec2 p) const;
   bool empty() const { return segments_.empty(); }
 
  private:
@@ -38,6 +42,7 @@ class RegionIndex {
   std::vector<int> cellStart_, entries_;
   enum : std::uint8_t { kOutside = 0, kInside = 1, kCrossed = 2 };
   std::vector<std::uint8_t> cellState_;
+  std::vector<int> cellsToBoundary_;  // Chebyshev distance, in cells, to the nearest crossed cell
 };
 
 }  // namespace pak

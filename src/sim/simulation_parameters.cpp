@@ -16,6 +16,8 @@ void checkSimulationParameters(const SimulationParameters& p) {
       {&P::soft, "--soft"},                     {&P::growthRate, "--growth-rate"},
       {&P::cellSize, "--cell-size"},           {&P::inversionStrength, "--k-inversion"},
       {&P::selfRepulsion, "--self-repulsion"},
+      {&P::pocketPressure, "--pocket-pressure"}, {&P::pocketClearance, "--pocket-clearance"},
+      {&P::unfoldStrength, "--k-unfold"},
   };
   for (const auto& [member, option] : nonNegative)
     if (!(p.*member >= 0.0) || !std::isfinite(p.*member)) throw InputError(option, "must be a non-negative number");

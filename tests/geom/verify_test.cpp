@@ -160,3 +160,11 @@ TEST(SelfIntersection, RingsDrawnCrossingAreNotFolds) {
   ASSERT_EQ(check.problems.size(), 1u);
   EXPECT_EQ(check.problems[0], "element 1's outline crosses itself");
 }
+
+TEST(SelfIntersection, TheCrossingPointIsWhereTwoEdgesMeet) {
+  const std::optional<Vec2> at = ringSelfCrossing({{0, 0}, {10, 10}, {10, 0}, {0, 10}});
+  ASSERT_TRUE(at.has_value());
+  EXPECT_NEAR(at->x, 5.0, 1e-12);
+  EXPECT_NEAR(at->y, 5.0, 1e-12);
+  EXPECT_FALSE(ringSelfCrossing(square(0, 0, 10)).has_value());
+}

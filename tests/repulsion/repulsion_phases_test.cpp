@@ -81,13 +81,38 @@ TEST_F(RepulsionPhases, InOrderTheyArePackRepulsion) {
   const StopReason reason = simulate(sim, run, options.stop, options.stop.targetFill, 0, {}, {});
   EXPECT_EQ(reason, StopReason::IterationCap);
   EXPECT_EQ(sim.iteration(), options.stop.maxIterations);
-  const int settled = settle(sim, run, options.stop);
+  const int settled = settle(sim, run, options.stop, run.types);
   EXPECT_GE(settled, 0);
   EXPECT_LE(settled, options.stop.settleIterations);
   EXPECT_EQ(sim.iteration(), options.stop.maxIterations + settled);
   const Packing byPhases = collectPrimary(run, sim, seeding, reason);
   EXPECT_TRUE(samePacking(byPhases, packRepulsion(scene, library, options)));
   EXPECT_TRUE(artIsClean(byPhases));
+}
+
+TEST_F(RepulsionPhases, SettleUnfoldsAnElementFoldedOverItself) {
+  constexpr double kFoldLength = 1.0;  // beyond the second neighbour, in skin segments
+  // Folds one element, settles, and says whether its art still crosses itself.
+  auto foldedAfterSettle = [&](double unfoldStrength) {
+    RepulsionOptions options = quickOptions();
+    options.count = 1;
+    options.simulation.unfoldStrength = unfoldStrength;
+    const RepulsionRun run = prepareRepulsion(scene, library, options);
+    Seeding seeding = seedPrimaries(run);
+    shrinkSeeds(run, seeding);
+    ThreadPool pool(options.run.threads);
+    PackingSimulation sim = primarySimulation(run, seeding, pool);
+    // One skin vertex dragged along the skin past its next two neighbours: the skin and the
+    // art bound to it zigzag back over themselves.
+    std::vector<Vec2>& x = sim.positions();
+    const int v = sim.meshes()[0].vertexBegin;
+    x[v] = x[v + 2] + (x[v + 2] - x[v + 1]) * kFoldLength;
+    EXPECT_FALSE(foldedMeshes(sim, run.types).empty());
+    EXPECT_LE(settle(sim, run, options.stop, run.types), options.stop.settleIterations);
+    return !foldedMeshes(sim, run.types).empty();
+  };
+  EXPECT_FALSE(foldedAfterSettle(RepulsionOptions{}.simulation.unfoldStrength));
+  EXPECT_TRUE(foldedAfterSettle(0.0));  // the springs alone leave it folded
 }
 
 TEST_F(RepulsionPhases, TheTimeLimitStopsTheRun) {

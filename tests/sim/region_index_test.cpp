@@ -79,3 +79,24 @@ TEST(RegionIndex, NonFinitePointHasNoClosestBoundary) {
   EXPECT_FALSE(index.query({std::nan(""), 3}, true).computed);
   EXPECT_FALSE(index.query({3, std::numeric_limits<double>::infinity()}, true).computed);
 }
+
+TEST(RegionIndex, InsideDistanceBoundNeverExceedsTheDistance) {
+  RegionIndex index(squareWithHole(), 7.0);
+  Rng rng(5);
+  int positive = 0;
+  for (int i = 0; i < 2000; ++i) {
+    const Vec2 p{rng.uniform(-30, 130), rng.uniform(-30, 130)};
+    const double bound = index.insideDistanceBound(p);
+    const RegionIndex::Query q = index.query(p, true);
+    if (!q.inside) {
+      EXPECT_EQ(bound, 0.0) << p.x << ", " << p.y;  // outside or in the hole: no bound
+      continue;
+    }
+    EXPECT_LE(bound, q.distance + 1e-12) << p.x << ", " << p.y;
+    positive += bound > 0.0 ? 1 : 0;
+  }
+  EXPECT_GT(positive, 100);  // it does skip queries far from the walls
+  // Deep inside (20 from the walls and the hole), a cell or so short of the distance.
+  EXPECT_GE(index.insideDistanceBound({20, 20}), 20.0 - 3 * 7.0);
+  EXPECT_EQ(index.insideDistanceBound({std::nan(""), 20}), 0.0);
+}

@@ -1,4 +1,5 @@
 #pragma once
+#include <optional>
 // Invariant checkers shipped with the library and called by the tests.
 #include <string>
 #include <vector>
@@ -25,6 +26,7 @@ struct PackingCheck {
   double outsideArea = 0.0;
   int selfIntersecting = 0;   // elements whose outline crosses itself (see checkSelfIntersections)
   std::vector<std::string> problems;
+  std::vector<std::size_t> offending;  // elements in an overlapping pair or outside, ascending
 };
 
 struct PackingCheckOptions {
@@ -39,6 +41,8 @@ PackingCheck verifyPacking(const std::vector<Region>& elements, const Region& co
 // Whether two edges of the closed ring that share no vertex cross (a fold, a figure eight).
 // Edges that only touch, and repeated consecutive points, are not crossings.
 bool ringSelfIntersects(const Ring& ring);
+// Where it does: a point where two of its edges cross (the first the sweep finds).
+std::optional<Vec2> ringSelfCrossing(const Ring& ring);
 
 // Counts the elements whose outline crosses itself (a limb folded over its own body), one
 // problem each: `outlines[i]` holds element i's filled rings as placed. A ring that already

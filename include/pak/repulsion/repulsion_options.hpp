@@ -63,6 +63,15 @@ struct OrientationOptions {
   double torsion = 10.0;
 };
 
+// RepulsionPak's forces: the shared defaults with edge springs half as stiff as the thesis's
+// k_edg 40, since the pocket pressure now does the bending into pockets that stiffer springs
+// resisted (docs/repulsionpak.md, "Even negative space").
+inline SimulationParameters repulsionSimulationDefaults() {
+  SimulationParameters p;
+  p.edgeStrength = 20.0;
+  return p;
+}
+
 struct RepulsionOptions {
   // --- elements and seeding (4.4)
   double gap = 10.0;  // d_gap between neighbouring elements
@@ -72,7 +81,7 @@ struct RepulsionOptions {
   int count = 0;                  // elements to seed; 0: from elementArea
   double elementArea = 1.0 / 30;  // nominal skin area of an average element / free area
   double initialCoverage = 0.08;  // skins cover this fraction of the container at the start
-  SimulationParameters simulation;  // forces (4.5), integration, growth, grid
+  SimulationParameters simulation = repulsionSimulationDefaults();  // forces (4.5), integration, growth, grid
   RepulsionStopRule stop;
   SecondaryPassOptions secondary;
   CornerDockingOptions shapeMatching;

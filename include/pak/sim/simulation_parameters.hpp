@@ -25,10 +25,19 @@ struct SimulationParameters {
   double outsideTolerance = 0.5;
   // RepulsionPak: a triangle squeezed below a quarter of its rest area pushes its vertices
   // apart with this strength, so a thin limb bends instead of folding over (thesis: none, 0).
-  double inversionStrength = 200.0;
+  double inversionStrength = 5000.0;
   // RepulsionPak: a far part of an element's own skin (a limb bending onto its body) repels
   // with this share of k_rpl, so an element does not fold over itself (thesis: none, 0).
   double selfRepulsion = 1.0;
+  // RepulsionPak: a skin vertex of an element that has stopped growing, farther than
+  // pocketClearance from every other skin and the wall, is pushed outward with this strength,
+  // so the element bulges into the pocket beside it (thesis: none, 0).
+  double pocketPressure = 1500.0;
+  double pocketClearance = 12.0;
+  // RepulsionPak: in the clean-up, the mesh around a crossing of an element's art is pulled
+  // toward its best-fit rest shape with this strength per unit of distance, doubled each round
+  // the crossing stays (thesis: none, 0).
+  double unfoldStrength = 20.0;
 };
 
 // Throws InputError naming the option as `pak` spells it (--k-edge, --time-step, …) for a
