@@ -203,23 +203,29 @@ void PackingSimulation::nearestSkinPointsOf(Vec2 p, Vec2 offset, int image, int 
   });
 }
 
-bool PackingSimulation::nearestFarOwnSkinPoint(int v, const MeshInstance& mesh, Vec2& closest) const {
+template <class Visit>
+void PackingSimulation::forEachFarOwnSegment(int v, const MeshInstance& mesh, Visit&& visit) const {
   const Vec2 x = position_[v];
   const int k = v - mesh.vertexBegin, nb = mesh.boundaryCount;
+  grid_.forEachNear(x, 1, [&](int s) {
+    if (segmentMesh_[s] != meshOf_[v]) return;
+    const int j = s - mesh.segmentBegin;
+    if (std::min(std::abs(j - k), nb - std::abs(j - k)) <= kSelfNeighbourhood) return;  // v's own side
+    double t;
+    const Vec2 q = closestOnSegment(x, position_[segmentEnds_[2 * s]], position_[segmentEnds_[2 * s + 1]], t);
+    visit(s, q, t, lengthSquared(x - q));
+  });
+}
+
+bool PackingSimulation::nearestFarOwnSkinPoint(int v, const MeshInstance& mesh, Vec2& closest) const {
+  const Vec2 x = position_[v];
   // Only nearer than half its clearance at rest: a drawn notch or a neighbouring ear is not a fold.
   const double reach = std::min(parameters_.cellSize, kSelfClearanceShare * restSelfClearance_[v] * mesh.growth);
   double best = reach * reach;
   bool found = false;
-  grid_.forEachNear(x, 1, [&](int s) {
-    if (segmentMesh_[s] != meshOf_[v]) return;
-    const int j = s - mesh.segmentBegin;
-    const int along = std::min(std::abs(j - k), nb - std::abs(j - k));
-    if (along <= kSelfNeighbourhood) return;  // the skin next to v along the ring
-    const int a = segmentEnds_[2 * s], b = segmentEnds_[2 * s + 1];
-    double t;
-    const Vec2 q = closestOnSegment(x, position_[a], position_[b], t);
-    const double d2 = lengthSquared(x - q);
+  forEachFarOwnSegment(v, mesh, [&](int s, Vec2 q, double t, double d2) {
     if (d2 >= best) return;
+    const int a = segmentEnds_[2 * s], b = segmentEnds_[2 * s + 1];
     const Vec2 normal = t <= 0.0 ? vertexNormal_[a] : (t >= 1.0 ? vertexNormal_[b] : segmentNormal_[s]);
     if (dot(x - q, normal) <= 0.0) return;  // across its own body, not a limb coming from outside
     best = d2;
@@ -242,14 +248,7 @@ Vec2 PackingSimulation::pocketPressure(int v, const MeshInstance& mesh, const Sk
   if (cross(normalized(x - before), normalized(after - x)) < -kPocketReflexTurn) return {};
   // A drawn notch (between two ears, say) is not a pocket: the element's own skin away from v
   // along the ring counts as a neighbour.
-  grid_.forEachNear(x, 1, [&](int s) {
-    if (segmentMesh_[s] != meshOf_[v]) return;
-    const int j = s - mesh.segmentBegin;
-    if (std::min(std::abs(j - k), nb - std::abs(j - k)) <= kSelfNeighbourhood) return;
-    double t;
-    const Vec2 q = closestOnSegment(x, position_[segmentEnds_[2 * s]], position_[segmentEnds_[2 * s + 1]], t);
-    free2 = std::min(free2, lengthSquared(x - q));
-  });
+  forEachFarOwnSegment(v, mesh, [&](int, Vec2, double, double d2) { free2 = std::min(free2, d2); });
   double free = std::sqrt(free2);
   if (free <= clearance) return {};
   if (!periodic()) {

@@ -150,6 +150,10 @@ class PackingSimulation {
   // approaches from outside (a limb bending onto its own body), nearer than half the
   // distance between them at rest and within the cut-off.
   bool nearestFarOwnSkinPoint(int v, const MeshInstance& mesh, Vec2& closest) const;
+  // visit(segment, closest point, its parameter t, squared distance) for each skin segment of
+  // v's own mesh in the 3 × 3 cells around it, other than the kSelfNeighbourhood next to v.
+  template <class Visit>
+  void forEachFarOwnSegment(int v, const MeshInstance& mesh, Visit&& visit) const;
   // Outward push on a skin vertex bordering a pocket (SimulationParameters::pocketPressure).
   Vec2 pocketPressure(int v, const MeshInstance& mesh, const SkinHits& near) const;
   // Periodic domain (tile mode): the hits of p - offset, reported at the clone `image`.

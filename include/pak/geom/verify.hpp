@@ -1,6 +1,6 @@
 #pragma once
-#include <optional>
 // Invariant checkers shipped with the library and called by the tests.
+#include <optional>
 #include <string>
 #include <vector>
 
