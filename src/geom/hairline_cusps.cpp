@@ -7,6 +7,7 @@
 
 #include "pak/geom/clipping.hpp"
 #include "pak/geom/closest_point.hpp"
+#include "pak/geom/segment_crossing.hpp"
 #include "pak/geom/verify.hpp"
 
 namespace pak {
@@ -20,14 +21,7 @@ constexpr double kFoldBack = 0.1;
 // The distance between segments ab and cd, and how far along each (0…1) its closest points lie.
 struct Closest { double distance, t, u; };
 Closest closestBetween(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
-  auto side = [](Vec2 p, Vec2 q, Vec2 r) {
-    const double o = cross(q - p, r - p);
-    return (o > 0.0) - (o < 0.0);
-  };
-  if (side(a, b, c) * side(a, b, d) < 0 && side(c, d, a) * side(c, d, b) < 0) {
-    const double t = cross(c - a, d - c) / cross(b - a, d - c), u = cross(c - a, b - a) / cross(b - a, d - c);
-    return {0.0, t, u};
-  }
+  if (const auto crossing = properCrossing(a, b, c, d)) return {0.0, crossing->t, crossing->u};
   // Otherwise an end of one is nearest the other.
   Closest best{std::numeric_limits<double>::infinity(), 0.0, 0.0};
   auto offer = [&](Vec2 p, Vec2 from, Vec2 to, bool onSecond, double end) {

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "pak/geom/clipping.hpp"
+#include "pak/geom/segment_crossing.hpp"
 
 namespace pak {
 namespace {
@@ -125,10 +126,6 @@ std::optional<Vec2> ringSelfCrossing(const Ring& input) {
   auto lo = [&](std::size_t e) { return std::min(ring[e].x, ring[(e + 1) % n].x); };
   auto hi = [&](std::size_t e) { return std::max(ring[e].x, ring[(e + 1) % n].x); };
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return lo(a) < lo(b); });
-  auto side = [](Vec2 a, Vec2 b, Vec2 c) {
-    const double o = cross(b - a, c - a);
-    return (o > 0.0) - (o < 0.0);
-  };
   for (std::size_t i = 0; i < n; ++i) {
     const std::size_t e = order[i];
     const Vec2 a = ring[e], b = ring[(e + 1) % n];
@@ -138,10 +135,7 @@ std::optional<Vec2> ringSelfCrossing(const Ring& input) {
       if (f == (e + 1) % n || e == (f + 1) % n) continue;  // neighbours share a vertex
       const Vec2 c = ring[f], d = ring[(f + 1) % n];
       if (std::max(c.y, d.y) < eMinY || std::min(c.y, d.y) > eMaxY) continue;
-      if (side(a, b, c) * side(a, b, d) < 0 && side(c, d, a) * side(c, d, b) < 0) {
-        const double t = cross(c - a, d - c) / cross(b - a, d - c);
-        return a + (b - a) * t;
-      }
+      if (const auto crossing = properCrossing(a, b, c, d)) return a + (b - a) * crossing->t;
     }
   }
   return std::nullopt;

@@ -303,6 +303,10 @@ void PackingSimulation::fitClusters() {
 
 void PackingSimulation::grow() {
   settling_ = false;
+  releaseHolds();
+}
+
+void PackingSimulation::releaseHolds() {
   for (int v : clusterVertices_) vertexCluster_[v] = -1;
   clusterVertices_.clear();
   clusters_.clear();
@@ -354,7 +358,10 @@ void PackingSimulation::computeForces(std::size_t vertexBegin, std::size_t verte
         if (nearestFarOwnSkinPoint(static_cast<int>(v), mesh, closest))
           f += forces::repulsion(x, closest, P.repulsionStrength * P.selfRepulsion, P.soft);
       }
-      if (P.pocketPressure > 0.0 && static_cast<int>(v) - mesh.vertexBegin < mesh.boundaryCount && !canGrow(mesh))
+      // Not in the clean-up for a mesh pressed deep into another: it would keep it pressed in.
+      const bool pressedIn = settling_ && mesh.deep;
+      if (P.pocketPressure > 0.0 && !pressedIn && static_cast<int>(v) - mesh.vertexBegin < mesh.boundaryCount &&
+          !canGrow(mesh))
         f += pocketPressure(static_cast<int>(v), mesh, near);
     }
     insideOther_[v] = inside ? 1 : 0;
@@ -422,6 +429,41 @@ void PackingSimulation::contractMesh(int m, double factor) {
   centre = centre / static_cast<double>(mesh.vertexCount);
   for (int v = mesh.vertexBegin; v < mesh.vertexBegin + mesh.vertexCount; ++v) {
     position_[v] = centre + (position_[v] - centre) * factor;
+    velocity_[v] = Vec2{};
+  }
+}
+
+void PackingSimulation::restoreRestShape(int m, double keep, Vec2 around, double radius) {
+  const MeshInstance& mesh = meshes_[m];
+  const int begin = mesh.vertexBegin, end = mesh.vertexBegin + mesh.vertexCount;
+  auto weight = [&](int v) {  // 1 at `around`, falling to 0 at the radius
+    return std::isinf(radius) ? 1.0 : std::max(0.0, 1.0 - distance(position_[v], around) / radius);
+  };
+  Vec2 centre, restMean;
+  double total = 0.0;
+  for (int v = begin; v < end; ++v) {
+    const double w = weight(v);
+    centre += position_[v] * w;
+    restMean += restDirection_[v] * w;
+    total += w;
+  }
+  if (!(total > 0.0)) return;
+  centre = centre / total;
+  restMean = restMean / total;
+  double along = 0.0, across = 0.0;  // the best-fit rotation, as in fitClusters
+  for (int v = begin; v < end; ++v) {
+    const double w = weight(v);
+    const Vec2 q = restDirection_[v] - restMean, p = position_[v] - centre;
+    along += w * dot(q, p);
+    across += w * cross(q, p);
+  }
+  const double turn = std::atan2(across, along), c = std::cos(turn), s = std::sin(turn);
+  for (int v = begin; v < end; ++v) {
+    const double w = weight(v);
+    if (w == 0.0) continue;
+    const Vec2 q = (restDirection_[v] - restMean) * mesh.growth;
+    const Vec2 rest = centre + Vec2{q.x * c - q.y * s, q.x * s + q.y * c};
+    position_[v] += (rest - position_[v]) * (w * (1.0 - keep));
     velocity_[v] = Vec2{};
   }
 }

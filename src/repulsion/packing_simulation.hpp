@@ -47,6 +47,7 @@ struct MeshInstance {
   double restArea = 0.0;        // skin area at growth 1
   int container = 0;            // which of setContainerParts' regions holds it
   double restAngle = 0.0;       // the angle it was added with (radians)
+  double settleFloor = 0.0;     // the clean-up shrinks it no smaller than this growth
 };
 
 class PackingSimulation {
@@ -85,14 +86,18 @@ class PackingSimulation {
   // nothing grows, and a mesh with a vertex deeper than `depth` inside another one, or pushed
   // out of the container, shrinks a growth step).
   void grow();
-  void settle(double depth) { settling_ = true; settleDepth2_ = depth * depth; }
+  void settle(double depth, double floorShare) {
+    settling_ = true;
+    settleDepth2_ = depth * depth;
+    for (MeshInstance& m : meshes_) m.settleFloor = m.growth * floorShare;
+  }
   // Meshes the clean-up still shrinks: not frozen, with a vertex deeper than the settle depth
   // inside another mesh or beyond the tolerance outside the container.
-  static bool needsSettling(const MeshInstance& m) { return !m.frozen && m.deep; }
+  static bool needsSettling(const MeshInstance& m) { return !m.frozen && m.deep && m.growth > m.settleFloor; }
   // The clean-up's unfolding: until `grow`, the vertices of `mesh` within `radius` of `point`
   // are also pulled toward their rest shape, rotated and scaled to fit them best, with
   // `strength` per unit of distance. Vertices already so held stay in their group, which is
-  // held at least as strongly from then on.
+  // held at least as strongly from then on. An infinite radius holds the whole mesh.
   void restoreAround(int mesh, Vec2 point, double radius, double strength);
 
   int unsettledCount() const;
@@ -105,6 +110,13 @@ class PackingSimulation {
   // Scales the mesh's vertex positions about their mean by `factor` (the last resort of the
   // art clean-up: a tip left across the wall, or a sliver of overlap, between two vertices).
   void contractMesh(int mesh, double factor);
+  // The last resort for a fold the clean-up could not undo: the vertices within `radius` of
+  // `around` move toward the mesh's rest shape (at its growth, rotated and placed to fit them
+  // best), to `keep` of the way from it at `around` and less farther out. An infinite radius
+  // moves the whole mesh, and keep 0 then gives the rest shape, which does not fold.
+  void restoreRestShape(int mesh, double keep, Vec2 around, double radius);
+  // Ends every restoreAround hold (grow does too).
+  void releaseHolds();
 
   // Skin area of all meshes over the container area.
   double fill() const { return fill_; }

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "pak/error.hpp"
 #include "pak/geom/clipping.hpp"
@@ -268,18 +269,27 @@ int settle(PackingSimulation& sim, const RepulsionRun& run, const RepulsionStopR
   // Skins are the art offset by half the gap: a vertex less than a quarter of the gap inside
   // another skin leaves the two arts at least three quarters of the gap apart.
   constexpr double kSettleDepthShare = 0.25;
+  // …but none shrinks below this share of its growth unless its art overlaps or leaves the
+  // container: a skin pressed into another by pocket pressure is usually harmless.
+  constexpr double kSettleFloor = 0.95;
   // Unfolding rounds, each this long: the mesh around each crossing of an art outline is pulled
   // toward its rest shape, twice as hard each round.
   constexpr int kArtRounds = 4, kArtRoundIterations = 100;
   constexpr double kUnfoldRadius = 1.5;  // × the neighbour cell: the mesh around a crossing
   const int start = sim.iteration();
-  sim.settle(kSettleDepthShare * run.options.gap);
+  // A tile has no clean-up of its art (cleanArt), so its elements shrink until clear.
+  const bool tiled = isTiled(run.period);
+  sim.settle(kSettleDepthShare * run.options.gap, tiled ? 0.0 : kSettleFloor);
   const Deadline deadline(run.started, stop.timeLimit);
   auto left = [&] { return stop.settleIterations - (sim.iteration() - start); };
   auto shrink = [&] {
     while (left() > 0 && sim.unsettledCount() > 0 && !deadline.passed()) sim.step();
   };
   shrink();
+  if (!tiled) {
+    for (std::size_t e : artOffenders(collectPacking(run, sim, types))) sim.meshes()[e].settleFloor = 0.0;
+    shrink();
+  }
   if (sim.parameters().unfoldStrength > 0.0)
     for (int round = 0; round < kArtRounds && left() > 0 && !deadline.passed(); ++round) {
       const std::vector<Fold> folds = foldedMeshes(sim, types);
@@ -291,6 +301,26 @@ int settle(PackingSimulation& sim, const RepulsionRun& run, const RepulsionStopR
       for (int i = 0; i < kArtRoundIterations && left() > 0 && !deadline.passed(); ++i) sim.step();
       shrink();
     }
+  // A fold the rounds left: the element is relaxed toward its rest shape until it no longer
+  // folds, then held in that shape as a whole while the forces move it clear and it shrinks
+  // if still deep. The others stand still meanwhile, so that only it gives way.
+  if (sim.parameters().unfoldStrength > 0.0 && left() > 0 && !deadline.passed()) {
+    const std::vector<char> relaxed = relaxFolds(sim, types);
+    if (std::any_of(relaxed.begin(), relaxed.end(), [](char r) { return r != 0; })) {
+      sim.releaseHolds();
+      const double hold = std::ldexp(sim.parameters().unfoldStrength, kArtRounds);
+      std::vector<char> wasFrozen(relaxed.size());
+      for (std::size_t m = 0; m < relaxed.size(); ++m) {
+        MeshInstance& mesh = sim.meshes()[m];
+        wasFrozen[m] = mesh.frozen;
+        if (relaxed[m]) sim.restoreAround(static_cast<int>(m), Vec2{}, std::numeric_limits<double>::infinity(), hold);
+        else mesh.frozen = true;
+      }
+      for (int i = 0; i < kArtRoundIterations && left() > 0 && !deadline.passed(); ++i) sim.step();
+      shrink();
+      for (std::size_t m = 0; m < relaxed.size(); ++m) sim.meshes()[m].frozen = wasFrozen[m];
+    }
+  }
   sim.grow();
   return sim.iteration() - start;
 }
@@ -350,35 +380,52 @@ std::vector<std::size_t> artOffenders(const Packing& packing) {
   return offending;
 }
 
+std::vector<char> relaxFolds(PackingSimulation& sim, const std::vector<PreparedElement>& types) {
+  // The mesh around the crossing first, in widening patches (× the neighbour cell), each time
+  // a quarter of the way back; then the whole mesh, halfway and at last all the way.
+  constexpr double kPatches[] = {1.5, 2.0, 3.0, 4.5};
+  constexpr int kSteps = 6;
+  const double inf = std::numeric_limits<double>::infinity();
+  std::vector<char> relaxed(sim.meshes().size(), 0);
+  for (int step = 0; step < kSteps; ++step) {
+    const std::vector<Fold> folds = foldedMeshes(sim, types);
+    if (folds.empty()) break;
+    for (const Fold& fold : folds) {
+      if (relaxed[fold.mesh] == step + 1) continue;  // a second crossing of the same mesh
+      if (step < 4) sim.restoreRestShape(fold.mesh, 0.25, fold.at, kPatches[step] * sim.parameters().cellSize);
+      else sim.restoreRestShape(fold.mesh, step == 4 ? 0.5 : 0.0, fold.at, inf);
+      relaxed[fold.mesh] = static_cast<char>(step + 1);
+    }
+  }
+  return relaxed;
+}
+
 Packing cleanArt(const RepulsionRun& run, PackingSimulation& sim, const std::vector<PreparedElement>& types) {
-  // Each round contracts every offending element by half a percent about its centre, at most
-  // 3 % in all: what is left across the wall or a neighbour between two mesh vertices.
-  constexpr int kContractRounds = 6;
-  constexpr double kContraction = 0.995;
+  // Each round contracts every offending element by half a percent about its centre, six
+  // times (what is left across the wall or a neighbour between two mesh vertices), then by 2 %
+  // (an element relaxed toward its rest shape below, or one the clean-up ran out of
+  // iterations for), at most 40 % in all, until it is clear.
+  constexpr int kGentleRounds = 6, kRounds = 31;
+  constexpr double kGentle = 0.995, kFirm = 0.98;
+  if (isTiled(run.period)) return collectPacking(run, sim, types);
   Packing packing = collectPacking(run, sim, types);
-  if (isTiled(run.period)) return packing;
-  if (!artIsClean(packing) && sim.projectInside() > 0) packing = collectPacking(run, sim, types);
-  for (int round = 0; round < kContractRounds; ++round) {
-    const std::vector<std::size_t> offending = artOffenders(packing);
+  if (!artIsClean(packing)) sim.projectInside();  // may fold an element pressed onto the wall
+  const std::vector<char> restored = relaxFolds(sim, types);
+  packing = collectPacking(run, sim, types);
+  for (int round = 0; round < kRounds; ++round) {
     bool moved = false;
-    for (std::size_t e : offending)
-      if (!sim.meshes()[e].frozen) {
-        sim.contractMesh(static_cast<int>(e), kContraction);
-        moved = true;
-      }
+    for (std::size_t e : artOffenders(packing)) {
+      if (sim.meshes()[e].frozen) continue;
+      sim.contractMesh(static_cast<int>(e), restored[e] || round >= kGentleRounds ? kFirm : kGentle);
+      moved = true;
+    }
     if (!moved) break;
     packing = collectPacking(run, sim, types);
   }
   return packing;
 }
 
-bool artIsClean(const Packing& packing) {
-  std::vector<Region> checked = artOutlines(packing);
-  if (!packing.fixedArt.empty()) checked.push_back(packing.fixedArt);
-  PackingCheckOptions options;
-  options.areaTolerance = 1e-6 * area(packing.container);
-  return verifyPacking(checked, packing.container, options).ok;
-}
+bool artIsClean(const Packing& packing) { return artOffenders(packing).empty(); }
 
 Packing collectPrimary(const RepulsionRun& run, PackingSimulation& sim, const Seeding& seeding, StopReason reason) {
   Packing packing = cleanArt(run, sim, run.types);

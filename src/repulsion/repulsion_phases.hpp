@@ -72,6 +72,10 @@ int settle(PackingSimulation& sim, const RepulsionRun& run, const RepulsionStopR
 // Each filled art ring of a non-frozen mesh that crosses itself, replayed, where it is not drawn so.
 struct Fold { int mesh; Vec2 at; };
 std::vector<Fold> foldedMeshes(const PackingSimulation& sim, const std::vector<PreparedElement>& types);
+// Each folded mesh is moved back toward its best-fit rest shape while it still folds: the
+// mesh around the crossing in widening patches, then the whole mesh, at last all the way.
+// Returns, per mesh, whether it was moved (non-zero).
+std::vector<char> relaxFolds(PackingSimulation& sim, const std::vector<PreparedElement>& types);
 
 // Steps until `targetFill`, eq. 4.7 under `stop`, the time limit or the iteration cap
 // (4.5.2). Progress and snapshots count iterations on from `iterationOffset`.

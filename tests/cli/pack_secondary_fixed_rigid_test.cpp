@@ -178,5 +178,5 @@ TEST(CliPackFixed, OutsideVerticesAreProjectedBackWhenTheArtIsNotClean) {
   EXPECT_EQ(report["overlap-count"], 0) << report["problems"];
   // The projection and the contraction are not simulation steps: the total is growth plus the
   // clean-up.
-  EXPECT_EQ(report["iterations"].get<int>() - report["passes"][0]["settle-iterations"].get<int>(), 2222);
+  EXPECT_EQ(report["iterations"].get<int>() - report["passes"][0]["settle-iterations"].get<int>(), 1099);
 }

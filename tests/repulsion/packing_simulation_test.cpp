@@ -185,6 +185,53 @@ TEST(PackingSimulation, ProjectInsideMovesOnlyOutsideVerticesOfMovingMeshes) {
   EXPECT_EQ(sim.projectInside(), 0);  // nothing left outside
 }
 
+TEST(PackingSimulation, RestoreRestShapeGivesTheRestShapeFittedToTheVertices) {
+  Region container = box(100);
+  RegionIndex index(container, 5.0);
+  ThreadPool pool(1);
+  SimulationParameters p = test::thesisParameters();
+  p.cellSize = 20.0;
+  PackingSimulation sim(index, 10000.0, p, pool);
+  sim.addMesh(squareMesh(), 0, {50, 50}, 0.0, 2.0);  // x, y 40..60
+  sim.finalize(area(100));
+  // Turn the square by 90° about (50, 50) and fold one corner across the opposite edge.
+  std::vector<Vec2>& x = sim.positions();
+  for (Vec2& v : x) v = Vec2{50.0 - (v.y - 50.0), 50.0 + (v.x - 50.0)};
+  x[2] = Vec2{30.0, 65.0};
+  const double inf = std::numeric_limits<double>::infinity();
+  sim.restoreRestShape(0, 0.0, Vec2{}, inf);
+  // A square of side 20 (rest 10 at growth 2) again, about the vertices' mean.
+  for (int k = 0; k < 4; ++k) EXPECT_NEAR(distance(x[k], x[(k + 1) % 4]), 20.0, 1e-9) << k;
+  EXPECT_NEAR(distance(x[0], x[2]), 20.0 * std::sqrt(2.0), 1e-9);
+  Vec2 mean;
+  for (Vec2 v : x) mean += v / 4.0;
+  EXPECT_NEAR(mean.x, 47.5, 1e-9);  // where the four were: (60 + 60 + 30 + 40) / 4
+  EXPECT_NEAR(mean.y, 51.25, 1e-9);
+  EXPECT_EQ(sim.velocities()[0], Vec2{});
+}
+
+TEST(PackingSimulation, RestoreRestShapeLeavesVerticesBeyondTheRadius) {
+  Region container = box(100);
+  RegionIndex index(container, 5.0);
+  ThreadPool pool(1);
+  SimulationParameters p = test::thesisParameters();
+  p.cellSize = 20.0;
+  PackingSimulation sim(index, 10000.0, p, pool);
+  sim.addMesh(squareMesh(), 0, {50, 50}, 0.0, 1.0);  // x, y 45..55
+  sim.finalize(area(100));
+  std::vector<Vec2>& x = sim.positions();
+  x[2] = Vec2{58.0, 58.0};  // pulled out of shape
+  const std::vector<Vec2> before = x;
+  sim.restoreRestShape(0, 0.5, Vec2{58.0, 58.0}, 6.0);  // only vertex 2 is within 6
+  for (int k : {0, 1, 3}) EXPECT_EQ(x[k], before[k]) << k;
+  // Vertex 2 alone has no rotation to fit: it goes halfway to its rest offset from itself,
+  // which is where it is.
+  EXPECT_NEAR(distance(x[2], before[2]), 0.0, 1e-9);
+  sim.restoreRestShape(0, 0.5, Vec2{58.0, 58.0}, 16.0);  // now 1 and 3 (13.3 away) count too
+  EXPECT_EQ(x[0], before[0]);
+  EXPECT_LT(distance(x[2], Vec2{55.0, 55.0}), distance(before[2], Vec2{55.0, 55.0}));
+}
+
 #ifndef NDEBUG  // assert() is on (PAK_ASSERTIONS, or a debug build)
 TEST(PackingSimulationDeathTest, AssertsTheOrderAddFinalizeStep) {
   GTEST_FLAG_SET(death_test_style, "threadsafe");

@@ -33,7 +33,7 @@ struct SimulationParameters {
   // pocketClearance from every other skin and the wall, is pushed outward with this strength,
   // so the element bulges into the pocket beside it (thesis: none, 0).
   double pocketPressure = 1500.0;
-  double pocketClearance = 12.0;
+  double pocketClearance = 5.0;
   // RepulsionPak: in the clean-up, the mesh around a crossing of an element's art is pulled
   // toward its best-fit rest shape with this strength per unit of distance, doubled each round
   // the crossing stays (thesis: none, 0).
