@@ -22,15 +22,30 @@ Box area(double size) {
   return b;
 }
 
+// The thesis's constants with a 20-unit neighbour cell.
+SimulationParameters boxParameters() {
+  SimulationParameters p = test::thesisParameters();
+  p.cellSize = 20.0;
+  return p;
+}
+
+// A simulation in the 100 × 100 box, on one thread.
+struct BoxSimulation {
+  explicit BoxSimulation(const SimulationParameters& p = boxParameters())
+      : parameters(p), sim(index, 10000.0, parameters, pool) {}
+  Region container = box(100);
+  RegionIndex index{container, 5.0};
+  ThreadPool pool{1};
+  SimulationParameters parameters;
+  PackingSimulation sim;
+};
+
 }  // namespace
 
 TEST(PackingSimulation, LoneMeshGrowsByRateTimesStep) {
-  Region container = box(100);
-  RegionIndex index(container, 5.0);
-  ThreadPool pool(1);
-  SimulationParameters p = test::thesisParameters();
-  p.cellSize = 20.0;
-  PackingSimulation sim(index, 10000.0, p, pool);
+  BoxSimulation scene;
+  const SimulationParameters& p = scene.parameters;
+  PackingSimulation& sim = scene.sim;
   sim.addMesh(squareMesh(), 0, {50, 50}, 0.0, 0.5);
   sim.finalize(area(100));
   EXPECT_NEAR(sim.fill(), 0.0025, 1e-12);  // (10 × 0.5)² / 100²
@@ -40,12 +55,8 @@ TEST(PackingSimulation, LoneMeshGrowsByRateTimesStep) {
 }
 
 TEST(PackingSimulation, GrowthIsBlockedWhileOverlapping) {
-  Region container = box(100);
-  RegionIndex index(container, 5.0);
-  ThreadPool pool(1);
-  SimulationParameters p = test::thesisParameters();
-  p.cellSize = 20.0;
-  PackingSimulation sim(index, 10000.0, p, pool);
+  BoxSimulation scene;
+  PackingSimulation& sim = scene.sim;
   sim.addMesh(squareMesh(), 0, {50, 50}, 0.0, 1.0);
   sim.addMesh(squareMesh(), 0, {57, 51}, 0.0, 1.0);  // overlaps the first by 3 × 9 units
   sim.finalize(area(100));
@@ -61,12 +72,8 @@ TEST(PackingSimulation, GrowthIsBlockedWhileOverlapping) {
 }
 
 TEST(PackingSimulation, BoundaryForcePushesOutsideVertexIn) {
-  Region container = box(100);
-  RegionIndex index(container, 5.0);
-  ThreadPool pool(1);
-  SimulationParameters p = test::thesisParameters();
-  p.cellSize = 20.0;
-  PackingSimulation sim(index, 10000.0, p, pool);
+  BoxSimulation scene;
+  PackingSimulation& sim = scene.sim;
   sim.addMesh(squareMesh(), 0, {98, 50}, 0.0, 1.0);  // right edge at x = 103
   sim.finalize(area(100));
   sim.step();
@@ -78,13 +85,10 @@ TEST(PackingSimulation, BoundaryForcePushesOutsideVertexIn) {
 }
 
 TEST(PackingSimulation, RepulsionPushesNeighboursApart) {
-  Region container = box(100);
-  RegionIndex index(container, 5.0);
-  ThreadPool pool(1);
-  SimulationParameters p = test::thesisParameters();
-  p.cellSize = 20.0;
-  p.growthRate = 0.0;
-  PackingSimulation sim(index, 10000.0, p, pool);
+  SimulationParameters still = boxParameters();
+  still.growthRate = 0.0;
+  BoxSimulation scene(still);
+  PackingSimulation& sim = scene.sim;
   sim.addMesh(squareMesh(), 0, {40, 50}, 0.0, 1.0);
   sim.addMesh(squareMesh(), 0, {52, 50}, 0.0, 1.0);  // 2 units apart
   sim.finalize(area(100));
@@ -96,12 +100,8 @@ TEST(PackingSimulation, RepulsionPushesNeighboursApart) {
 }
 
 TEST(PackingSimulation, FrozenMeshDoesNotMove) {
-  Region container = box(100);
-  RegionIndex index(container, 5.0);
-  ThreadPool pool(1);
-  SimulationParameters p = test::thesisParameters();
-  p.cellSize = 20.0;
-  PackingSimulation sim(index, 10000.0, p, pool);
+  BoxSimulation scene;
+  PackingSimulation& sim = scene.sim;
   sim.addMesh(squareMesh(), 0, {40, 50}, 0.0, 1.0, /*frozen=*/true);
   sim.addMesh(squareMesh(), 0, {52, 50}, 0.0, 1.0);
   sim.finalize(area(100));
@@ -158,12 +158,8 @@ TEST(PackingSimulation, ReflexCornerInsideAMeshPushesItOffAndBlocksGrowth) {
 }
 
 TEST(PackingSimulation, ProjectInsideMovesOnlyOutsideVerticesOfMovingMeshes) {
-  Region container = box(100);
-  RegionIndex index(container, 5.0);
-  ThreadPool pool(1);
-  SimulationParameters p = test::thesisParameters();
-  p.cellSize = 20.0;
-  PackingSimulation sim(index, 10000.0, p, pool);
+  BoxSimulation scene;
+  PackingSimulation& sim = scene.sim;
   sim.addMesh(squareMesh(), 0, {97, 50}, 0.0, 1.0);  // x 92..102: two corners 2 units outside
   sim.addMesh(squareMesh(), 0, {50, 2}, 0.0, 1.0);   // y -3..7: outside too, but frozen
   sim.meshes()[1].frozen = true;
@@ -186,12 +182,8 @@ TEST(PackingSimulation, ProjectInsideMovesOnlyOutsideVerticesOfMovingMeshes) {
 }
 
 TEST(PackingSimulation, RestoreRestShapeGivesTheRestShapeFittedToTheVertices) {
-  Region container = box(100);
-  RegionIndex index(container, 5.0);
-  ThreadPool pool(1);
-  SimulationParameters p = test::thesisParameters();
-  p.cellSize = 20.0;
-  PackingSimulation sim(index, 10000.0, p, pool);
+  BoxSimulation scene;
+  PackingSimulation& sim = scene.sim;
   sim.addMesh(squareMesh(), 0, {50, 50}, 0.0, 2.0);  // x, y 40..60
   sim.finalize(area(100));
   // Turn the square by 90° about (50, 50) and fold one corner across the opposite edge.
@@ -211,12 +203,8 @@ TEST(PackingSimulation, RestoreRestShapeGivesTheRestShapeFittedToTheVertices) {
 }
 
 TEST(PackingSimulation, RestoreRestShapeLeavesVerticesBeyondTheRadius) {
-  Region container = box(100);
-  RegionIndex index(container, 5.0);
-  ThreadPool pool(1);
-  SimulationParameters p = test::thesisParameters();
-  p.cellSize = 20.0;
-  PackingSimulation sim(index, 10000.0, p, pool);
+  BoxSimulation scene;
+  PackingSimulation& sim = scene.sim;
   sim.addMesh(squareMesh(), 0, {50, 50}, 0.0, 1.0);  // x, y 45..55
   sim.finalize(area(100));
   std::vector<Vec2>& x = sim.positions();
