@@ -32,6 +32,7 @@
 #include <string>
 
 #include "pak/error.hpp"
+#include "pak/geom/best_fit_rotation.hpp"
 
 namespace pak {
 namespace {
@@ -231,14 +232,9 @@ void ArapDeformation::deform(const std::vector<Vec2>& handlePositions, std::vect
     const auto& tri = s.rest.triangles[t];
     Vec2 restCentre, nowCentre;
     for (int v : tri) restCentre += s.rest.vertices[v] / 3.0, nowCentre += intermediate[v] / 3.0;
-    double a = 0.0, b = 0.0;
-    for (int v : tri) {
-      const Vec2 p = s.rest.vertices[v] - restCentre, q = intermediate[v] - nowCentre;
-      a += dot(p, q);
-      b += cross(p, q);
-    }
-    const double norm = std::hypot(a, b);
-    if (norm > 0.0) rotation[t] = {a / norm, b / norm};
+    BestFitRotation fit;
+    for (int v : tri) fit.add(s.rest.vertices[v] - restCentre, intermediate[v] - nowCentre);
+    rotation[t] = fit.turn();
   }
 
   // Step 2b: edges matched to the rotated rest edges, x and y separately.
@@ -246,10 +242,9 @@ void ArapDeformation::deform(const std::vector<Vec2>& handlePositions, std::vect
   Eigen::VectorXd bx(rows), by(rows);
   for (int r = 0; r < rows; ++r) {
     const auto [i, j] = s.edgeList[r];
-    const Vec2 cs = rotation[s.edgeTriangle[r]];
-    const Vec2 e = s.rest.vertices[j] - s.rest.vertices[i];
-    bx[r] = cs.x * e.x - cs.y * e.y;
-    by[r] = cs.y * e.x + cs.x * e.y;
+    const Vec2 e = rotated(s.rest.vertices[j] - s.rest.vertices[i], rotation[s.edgeTriangle[r]]);
+    bx[r] = e.x;
+    by[r] = e.y;
   }
   Eigen::VectorXd fx(handleCount), fy(handleCount), rx(freeCount), ry(freeCount);
   for (int k = 0; k < handleCount; ++k) fx[k] = handlePositions[k].x, fy[k] = handlePositions[k].y;

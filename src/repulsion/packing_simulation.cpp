@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <limits>
 
+#include "pak/geom/best_fit_rotation.hpp"
 #include "sim/forces.hpp"
 
 namespace pak {
@@ -288,16 +290,12 @@ void PackingSimulation::fitClusters() {
     Vec2 centre;
     for (int k = c.begin; k < c.end; ++k) centre += position_[clusterVertices_[k]];
     c.centre = centre / static_cast<double>(c.end - c.begin);
-    // The rotation that best fits the rest offsets to the current ones (2-D shape matching).
-    double along = 0.0, across = 0.0;
+    BestFitRotation fit;  // of the rest offsets onto the current ones
     for (int k = c.begin; k < c.end; ++k) {
       const int v = clusterVertices_[k];
-      const Vec2 q = restDirection_[v] - c.restMean, p = position_[v] - c.centre;
-      along += dot(q, p);
-      across += cross(q, p);
+      fit.add(restDirection_[v] - c.restMean, position_[v] - c.centre);
     }
-    const double turn = std::atan2(across, along);
-    c.turn = {std::cos(turn), std::sin(turn)};
+    c.turn = fit.turn();
   }
 }
 
@@ -306,10 +304,24 @@ void PackingSimulation::grow() {
   releaseHolds();
 }
 
+void PackingSimulation::holdRestShapes(const std::vector<char>& held, double strength) {
+  assert(held.size() == meshes_.size());
+  releaseHolds();
+  for (std::size_t m = 0; m < meshes_.size(); ++m)
+    if (held[m]) {
+      restoreAround(static_cast<int>(m), Vec2{}, std::numeric_limits<double>::infinity(), strength);
+    } else if (!meshes_[m].frozen) {
+      meshes_[m].frozen = true;
+      standingStill_.push_back(static_cast<int>(m));
+    }
+}
+
 void PackingSimulation::releaseHolds() {
   for (int v : clusterVertices_) vertexCluster_[v] = -1;
   clusterVertices_.clear();
   clusters_.clear();
+  for (int m : standingStill_) meshes_[m].frozen = false;
+  standingStill_.clear();
 }
 
 void PackingSimulation::wrapMeshes(std::size_t meshBegin, std::size_t meshEnd) {
@@ -384,8 +396,7 @@ void PackingSimulation::computeForces(std::size_t vertexBegin, std::size_t verte
     // Unfolding: toward the best-fit rest shape, which does not cross itself.
     if (vertexCluster_[v] >= 0) {
       const RestoreCluster& c = clusters_[vertexCluster_[v]];
-      const Vec2 q = (restDirection_[v] - c.restMean) * mesh.growth, t = c.turn;
-      const Vec2 target = c.centre + Vec2{q.x * t.x - q.y * t.y, q.x * t.y + q.y * t.x};
+      const Vec2 target = c.centre + rotated((restDirection_[v] - c.restMean) * mesh.growth, c.turn);
       f += (target - x) * c.strength;
     }
 
@@ -411,10 +422,7 @@ void PackingSimulation::computeForces(std::size_t vertexBegin, std::size_t verte
     // Eq. 4.6: optional preferred orientation.
     if (P.torsionStrength > 0.0) {
       Vec2 rest = restDirection_[v];
-      if (orientationRamp_.active) {  // rotated from the added angle to the field's here
-        const Vec2 t = meshTorsionTurn_[m];
-        rest = {rest.x * t.x - rest.y * t.y, rest.x * t.y + rest.y * t.x};
-      }
+      if (orientationRamp_.active) rest = rotated(rest, meshTorsionTurn_[m]);  // from the added angle to the field's here
       f += forces::torsion(x, meshCentre_[m], rest, P.torsionStrength);
     }
 
@@ -450,19 +458,13 @@ void PackingSimulation::restoreRestShape(int m, double keep, Vec2 around, double
   if (!(total > 0.0)) return;
   centre = centre / total;
   restMean = restMean / total;
-  double along = 0.0, across = 0.0;  // the best-fit rotation, as in fitClusters
-  for (int v = begin; v < end; ++v) {
-    const double w = weight(v);
-    const Vec2 q = restDirection_[v] - restMean, p = position_[v] - centre;
-    along += w * dot(q, p);
-    across += w * cross(q, p);
-  }
-  const double turn = std::atan2(across, along), c = std::cos(turn), s = std::sin(turn);
+  BestFitRotation fit;
+  for (int v = begin; v < end; ++v) fit.add(restDirection_[v] - restMean, position_[v] - centre, weight(v));
+  const Vec2 turn = fit.turn();
   for (int v = begin; v < end; ++v) {
     const double w = weight(v);
     if (w == 0.0) continue;
-    const Vec2 q = (restDirection_[v] - restMean) * mesh.growth;
-    const Vec2 rest = centre + Vec2{q.x * c - q.y * s, q.x * s + q.y * c};
+    const Vec2 rest = centre + rotated((restDirection_[v] - restMean) * mesh.growth, turn);
     position_[v] += (rest - position_[v]) * (w * (1.0 - keep));
     velocity_[v] = Vec2{};
   }

@@ -115,7 +115,10 @@ class PackingSimulation {
   // best), to `keep` of the way from it at `around` and less farther out. An infinite radius
   // moves the whole mesh, and keep 0 then gives the rest shape, which does not fold.
   void restoreRestShape(int mesh, double keep, Vec2 around, double radius);
-  // Ends every restoreAround hold (grow does too).
+  // Holds each marked mesh whole in its best-fit rest shape (restoreAround with an infinite
+  // radius) and stands every other one still, so that only the held ones give way.
+  void holdRestShapes(const std::vector<char>& held, double strength);
+  // Ends every restoreAround hold, and the standing still of holdRestShapes (grow does too).
   void releaseHolds();
 
   // Skin area of all meshes over the container area.
@@ -223,6 +226,7 @@ class PackingSimulation {
     double strength;
   };
   std::vector<RestoreCluster> clusters_;
+  std::vector<int> standingStill_;  // meshes holdRestShapes froze, to thaw on releaseHolds
   std::vector<int> clusterVertices_;
   std::vector<int> vertexCluster_;  // -1: none
   void fitClusters();

@@ -287,7 +287,7 @@ int settle(PackingSimulation& sim, const RepulsionRun& run, const RepulsionStopR
   };
   shrink();
   if (!tiled) {
-    for (std::size_t e : artOffenders(collectPacking(run, sim, types))) sim.meshes()[e].settleFloor = 0.0;
+    for (std::size_t e : artOffenders(run, sim, types)) sim.meshes()[e].settleFloor = 0.0;
     shrink();
   }
   if (sim.parameters().unfoldStrength > 0.0)
@@ -307,23 +307,47 @@ int settle(PackingSimulation& sim, const RepulsionRun& run, const RepulsionStopR
   if (sim.parameters().unfoldStrength > 0.0 && left() > 0 && !deadline.passed()) {
     const std::vector<char> relaxed = relaxFolds(sim, types);
     if (std::any_of(relaxed.begin(), relaxed.end(), [](char r) { return r != 0; })) {
-      sim.releaseHolds();
-      const double hold = std::ldexp(sim.parameters().unfoldStrength, kArtRounds);
-      std::vector<char> wasFrozen(relaxed.size());
-      for (std::size_t m = 0; m < relaxed.size(); ++m) {
-        MeshInstance& mesh = sim.meshes()[m];
-        wasFrozen[m] = mesh.frozen;
-        if (relaxed[m]) sim.restoreAround(static_cast<int>(m), Vec2{}, std::numeric_limits<double>::infinity(), hold);
-        else mesh.frozen = true;
-      }
+      sim.holdRestShapes(relaxed, std::ldexp(sim.parameters().unfoldStrength, kArtRounds));
       for (int i = 0; i < kArtRoundIterations && left() > 0 && !deadline.passed(); ++i) sim.step();
       shrink();
-      for (std::size_t m = 0; m < relaxed.size(); ++m) sim.meshes()[m].frozen = wasFrozen[m];
     }
   }
   sim.grow();
   return sim.iteration() - start;
 }
+
+namespace {
+
+// One mesh's art, replayed on its vertices, in input coordinates (strokes at its growth).
+std::vector<Shape> placedArt(const RepulsionRun& run, const PackingSimulation& sim,
+                             const std::vector<PreparedElement>& types, const MeshInstance& mesh,
+                             std::vector<Vec2>& artPoints) {
+  const CanonicalFrame& frame = run.setup.frame;
+  const PreparedElement& type = types[mesh.type];
+  replayArt(type.mesh, sim.positions().data() + mesh.vertexBegin, artPoints);
+  std::vector<Shape> art = type.art;
+  std::size_t k = 0;
+  for (Shape& shape : art) {
+    shape.strokeWidth *= mesh.growth / frame.scale;
+    for (Subpath& sub : shape.subpaths)
+      for (Vec2& p : sub.points) p = frame.toInput(artPoints[k++]);
+  }
+  return art;
+}
+
+// The outlines that overlap another's, or the fixed art, or leave the container, by more than
+// verifyPacking's tolerance (as `pak pack` checks it).
+std::vector<std::size_t> offendingOutlines(std::vector<Region> outlines, const Region& container, const Region& fixedArt) {
+  const std::size_t elements = outlines.size();
+  if (!fixedArt.empty()) outlines.push_back(fixedArt);
+  PackingCheckOptions options;
+  options.areaTolerance = 1e-6 * area(container);
+  std::vector<std::size_t> offending = verifyPacking(outlines, container, options).offending;
+  std::erase_if(offending, [&](std::size_t e) { return e >= elements; });  // the fixed art
+  return offending;
+}
+
+}  // namespace
 
 Packing collectPacking(const RepulsionRun& run, const PackingSimulation& sim, const std::vector<PreparedElement>& types) {
   const CanonicalFrame& frame = run.setup.frame;
@@ -338,19 +362,12 @@ Packing collectPacking(const RepulsionRun& run, const PackingSimulation& sim, co
   for (const MeshInstance& mesh : sim.meshes()) {
     const PreparedElement& type = types[mesh.type];
     const Vec2* vertices = sim.positions().data() + mesh.vertexBegin;
-    replayArt(type.mesh, vertices, artPoints);
     PlacedElement placed;
     placed.libraryIndex = mesh.type;
     placed.source = type.source;
     placed.growth = mesh.growth;
     placed.container = mesh.container;
-    placed.art = type.art;
-    std::size_t k = 0;
-    for (Shape& shape : placed.art) {
-      shape.strokeWidth *= mesh.growth / frame.scale;
-      for (Subpath& sub : shape.subpaths)
-        for (Vec2& p : sub.points) p = frame.toInput(artPoints[k++]);
-    }
+    placed.art = placedArt(run, sim, types, mesh, artPoints);
     int edges = 0;
     for (const Spring& s : type.mesh.springs)
       if (s.kind == SpringKind::Edge) {
@@ -370,14 +387,15 @@ Packing collectPacking(const RepulsionRun& run, const PackingSimulation& sim, co
 }
 
 std::vector<std::size_t> artOffenders(const Packing& packing) {
-  std::vector<Region> checked = artOutlines(packing);
-  const std::size_t elements = checked.size();
-  if (!packing.fixedArt.empty()) checked.push_back(packing.fixedArt);
-  PackingCheckOptions options;
-  options.areaTolerance = 1e-6 * area(packing.container);
-  std::vector<std::size_t> offending = verifyPacking(checked, packing.container, options).offending;
-  std::erase_if(offending, [&](std::size_t e) { return e >= elements; });  // the fixed art
-  return offending;
+  return offendingOutlines(artOutlines(packing), packing.container, packing.fixedArt);
+}
+
+std::vector<std::size_t> artOffenders(const RepulsionRun& run, const PackingSimulation& sim,
+                                      const std::vector<PreparedElement>& types) {
+  std::vector<Region> outlines;
+  std::vector<Vec2> artPoints;
+  for (const MeshInstance& mesh : sim.meshes()) outlines.push_back(artOutline(placedArt(run, sim, types, mesh, artPoints)));
+  return offendingOutlines(std::move(outlines), run.scene.container, run.fixedArt);
 }
 
 std::vector<char> relaxFolds(PackingSimulation& sim, const std::vector<PreparedElement>& types) {
@@ -408,21 +426,18 @@ Packing cleanArt(const RepulsionRun& run, PackingSimulation& sim, const std::vec
   constexpr int kGentleRounds = 6, kRounds = 31;
   constexpr double kGentle = 0.995, kFirm = 0.98;
   if (isTiled(run.period)) return collectPacking(run, sim, types);
-  Packing packing = collectPacking(run, sim, types);
-  if (!artIsClean(packing)) sim.projectInside();  // may fold an element pressed onto the wall
+  if (!artOffenders(run, sim, types).empty()) sim.projectInside();  // may fold an element pressed onto the wall
   const std::vector<char> restored = relaxFolds(sim, types);
-  packing = collectPacking(run, sim, types);
   for (int round = 0; round < kRounds; ++round) {
     bool moved = false;
-    for (std::size_t e : artOffenders(packing)) {
+    for (std::size_t e : artOffenders(run, sim, types)) {
       if (sim.meshes()[e].frozen) continue;
       sim.contractMesh(static_cast<int>(e), restored[e] || round >= kGentleRounds ? kFirm : kGentle);
       moved = true;
     }
     if (!moved) break;
-    packing = collectPacking(run, sim, types);
   }
-  return packing;
+  return collectPacking(run, sim, types);
 }
 
 bool artIsClean(const Packing& packing) { return artOffenders(packing).empty(); }

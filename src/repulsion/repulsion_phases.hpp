@@ -91,6 +91,9 @@ bool artIsClean(const Packing& packing);
 // The elements whose art overlaps another's or the fixed art, or leaves the container, by
 // more than verifyPacking's tolerance.
 std::vector<std::size_t> artOffenders(const Packing& packing);
+// The same, as the simulation stands, building only the art (not the whole packing).
+std::vector<std::size_t> artOffenders(const RepulsionRun& run, const PackingSimulation& sim,
+                                      const std::vector<PreparedElement>& types);
 // The packing after the art clean-up: vertices left outside projected in, then what still
 // overlaps or leaves the container contracted a little (PackingSimulation::contractMesh).
 Packing cleanArt(const RepulsionRun& run, PackingSimulation& sim, const std::vector<PreparedElement>& types);

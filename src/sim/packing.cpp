@@ -15,13 +15,15 @@ const char* toString(StopReason reason) {
   return "?";
 }
 
+Region artOutline(const std::vector<Shape>& art) {
+  std::vector<Region> painted;
+  for (const Shape& s : art) painted.push_back(paintedRegion(s));
+  return unite(painted);
+}
+
 std::vector<Region> artOutlines(const Packing& packing) {
   std::vector<Region> outlines;
-  for (const PlacedElement& e : packing.elements) {
-    std::vector<Region> painted;
-    for (const Shape& s : e.art) painted.push_back(paintedRegion(s));
-    outlines.push_back(unite(painted));
-  }
+  for (const PlacedElement& e : packing.elements) outlines.push_back(artOutline(e.art));
   return outlines;
 }
 

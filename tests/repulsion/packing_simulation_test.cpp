@@ -220,6 +220,27 @@ TEST(PackingSimulation, RestoreRestShapeLeavesVerticesBeyondTheRadius) {
   EXPECT_LT(distance(x[2], Vec2{55.0, 55.0}), distance(before[2], Vec2{55.0, 55.0}));
 }
 
+TEST(PackingSimulation, HoldRestShapesMovesOnlyTheHeldMeshAndReleaseThawsTheRest) {
+  BoxSimulation scene;
+  PackingSimulation& sim = scene.sim;
+  sim.addMesh(squareMesh(), 0, {44, 50}, 0.0, 1.0);                   // held: overlaps mesh 1
+  sim.addMesh(squareMesh(), 0, {52, 50}, 0.0, 1.0);                   // stands still
+  sim.addMesh(squareMesh(), 0, {20, 20}, 0.0, 1.0, /*frozen=*/true);  // frozen before, and after
+  sim.finalize(area(100));
+  sim.positions()[2] = Vec2{51.0, 57.0};  // mesh 0's corner pulled out of shape
+  const std::vector<Vec2> before = sim.positions();
+  sim.holdRestShapes({1, 0, 0}, 1.0);
+  for (int i = 0; i < 30; ++i) sim.step();
+  for (int v = 4; v < 12; ++v) EXPECT_EQ(sim.positions()[v], before[v]) << v;
+  EXPECT_TRUE(sim.meshes()[1].frozen);
+  // Held toward its square: the corner is nearer its rest place (49, 55) than it was.
+  EXPECT_LT(distance(sim.positions()[2], sim.positions()[1] + Vec2{0.0, 10.0}),
+            distance(before[2], before[1] + Vec2{0.0, 10.0}));
+  sim.releaseHolds();
+  EXPECT_FALSE(sim.meshes()[1].frozen);
+  EXPECT_TRUE(sim.meshes()[2].frozen);
+}
+
 #ifndef NDEBUG  // assert() is on (PAK_ASSERTIONS, or a debug build)
 TEST(PackingSimulationDeathTest, AssertsTheOrderAddFinalizeStep) {
   GTEST_FLAG_SET(death_test_style, "threadsafe");

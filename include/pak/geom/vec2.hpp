@@ -35,5 +35,7 @@ inline Vec2 rotated(Vec2 a, double radians) {
   double c = std::cos(radians), s = std::sin(radians);
   return {c * a.x - s * a.y, s * a.x + c * a.y};
 }
+// Rotated by a turn given as a unit (cos, sin) pair, with no trigonometry.
+constexpr Vec2 rotated(Vec2 a, Vec2 turn) { return {turn.x * a.x - turn.y * a.y, turn.y * a.x + turn.x * a.y}; }
 
 }  // namespace pak

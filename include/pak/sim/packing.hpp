@@ -63,7 +63,9 @@ struct Packing {
   Vec2 tile{};                   // W × H of a tileable packing (input units); 0: not tiled
 };
 
-// What each placed element paints, as one region per element (the union of its shapes).
+// What one element's art paints, as one region (the union of its shapes), and the same for
+// each placed element.
+Region artOutline(const std::vector<Shape>& art);
 std::vector<Region> artOutlines(const Packing& packing);
 // Each placed element's filled rings as drawn (its filled shapes' subpaths; strokes are
 // bands, not outlines), for checkSelfIntersections.
