@@ -111,6 +111,7 @@ void PackingSimulation::finalize(const Box& area) {
   outsideDepth_.assign(n, 0.0);
   vertexNormal_.assign(n, {});
   segmentNormal_.assign(segmentMesh_.size(), {});
+  segmentCopy_.assign(segmentMesh_.size(), {});
   meshCentre_.assign(meshes_.size(), {});
   meshOnCorner_.assign(meshes_.size(), 0);
   meshTorsionTurn_.assign(meshes_.size(), Vec2{1.0, 0.0});
@@ -159,6 +160,7 @@ void PackingSimulation::prepareSkins(std::size_t meshBegin, std::size_t meshEnd)
     for (int k = 0; k < nb; ++k) {
       Vec2 a = position_[mesh.vertexBegin + k], b = position_[mesh.vertexBegin + (k + 1) % nb];
       segmentNormal_[mesh.segmentBegin + k] = normalized(Vec2{b.y - a.y, a.x - b.x});
+      segmentCopy_[mesh.segmentBegin + k] = {a, b, static_cast<int>(m)};
     }
     for (int k = 0; k < nb; ++k)
       vertexNormal_[mesh.vertexBegin + k] =
@@ -166,8 +168,8 @@ void PackingSimulation::prepareSkins(std::size_t meshBegin, std::size_t meshEnd)
   }
 }
 
-void PackingSimulation::nearestSkinPoints(Vec2 p, int excludeMesh, SkinHits& hits) const {
-  nearestSkinPointsOf(p, Vec2{}, 0, excludeMesh, hits);
+void PackingSimulation::nearestSkinPoints(Vec2 p, int excludeMesh, SkinHits& hits, OwnSkin* own) const {
+  nearestSkinPointsOf(p, Vec2{}, 0, excludeMesh, hits, own);
   if (!periodic()) return;
   // Thesis 4.8: the clones in the 8 neighbouring cells act like their originals. A clone at
   // offset o near p is the original near p - o; skip offsets where p - o is out of reach.
@@ -177,7 +179,7 @@ void PackingSimulation::nearestSkinPoints(Vec2 p, int excludeMesh, SkinHits& hit
     if (q.x < vertexExtent_.min.x - reach || q.x > vertexExtent_.max.x + reach || q.y < vertexExtent_.min.y - reach ||
         q.y > vertexExtent_.max.y + reach)
       continue;
-    nearestSkinPointsOf(q, offset, image, -1, hits);  // a mesh's own clones repel it too
+    nearestSkinPointsOf(q, offset, image, -1, hits, nullptr);  // a mesh's own clones repel it too
   }
 }
 
@@ -187,17 +189,37 @@ Vec2 PackingSimulation::periodicOffset(int image) const {
   return {kCell[image][0] * domain_.period.x, kCell[image][1] * domain_.period.y};
 }
 
-void PackingSimulation::nearestSkinPointsOf(Vec2 p, Vec2 offset, int image, int excludeMesh,
-                                            SkinHits& hits) const {
+void PackingSimulation::nearestSkinPointsOf(Vec2 p, Vec2 offset, int image, int excludeMesh, SkinHits& hits,
+                                            OwnSkin* own) const {
   const double cutoff2 = parameters_.cellSize * parameters_.cellSize;
+  // v's place on its ring, for telling its own side from the far skin.
+  const int ownBegin = own ? meshes_[excludeMesh].segmentBegin : 0, nb = own ? meshes_[excludeMesh].boundaryCount : 0;
+  const int k = own ? own->vertex - meshes_[excludeMesh].vertexBegin : 0;
   grid_.forEachNear(p, 1, [&](int s) {
-    int mesh = segmentMesh_[s];
-    if (mesh == excludeMesh) return;
-    int a = segmentEnds_[2 * s], b = segmentEnds_[2 * s + 1];
+    const SegmentCopy& segment = segmentCopy_[s];
+    const int mesh = segment.mesh;
+    if (mesh == excludeMesh) {
+      if (!own) return;
+      const int j = s - ownBegin;
+      if (std::min(std::abs(j - k), nb - std::abs(j - k)) <= kSelfNeighbourhood) return;  // v's own side
+      double t;
+      const Vec2 q = closestOnSegment(p, segment.a, segment.b, t);
+      const double d2 = lengthSquared(p - q);
+      own->nearest2 = std::min(own->nearest2, d2);
+      if (d2 >= own->reach2) return;
+      const int a = segmentEnds_[2 * s], b = segmentEnds_[2 * s + 1];
+      const Vec2 normal = t <= 0.0 ? vertexNormal_[a] : (t >= 1.0 ? vertexNormal_[b] : segmentNormal_[s]);
+      if (dot(p - q, normal) <= 0.0) return;  // across its own body, not a limb coming from outside
+      own->reach2 = d2;
+      own->closest = q;
+      own->approached = true;
+      return;
+    }
     double t;
-    Vec2 q = closestOnSegment(p, position_[a], position_[b], t);
+    Vec2 q = closestOnSegment(p, segment.a, segment.b, t);
     double d2 = lengthSquared(p - q);
     if (d2 > cutoff2) return;
+    const int a = segmentEnds_[2 * s], b = segmentEnds_[2 * s + 1];
     // The side test needs the normal at the closest feature: a vertex's pseudo-normal at the
     // segment's ends, else the segment's own.
     Vec2 normal = t <= 0.0 ? vertexNormal_[a] : (t >= 1.0 ? vertexNormal_[b] : segmentNormal_[s]);
@@ -205,39 +227,16 @@ void PackingSimulation::nearestSkinPointsOf(Vec2 p, Vec2 offset, int image, int 
   });
 }
 
-template <class Visit>
-void PackingSimulation::forEachFarOwnSegment(int v, const MeshInstance& mesh, Visit&& visit) const {
-  const Vec2 x = position_[v];
-  const int k = v - mesh.vertexBegin, nb = mesh.boundaryCount;
-  grid_.forEachNear(x, 1, [&](int s) {
-    if (segmentMesh_[s] != meshOf_[v]) return;
-    const int j = s - mesh.segmentBegin;
-    if (std::min(std::abs(j - k), nb - std::abs(j - k)) <= kSelfNeighbourhood) return;  // v's own side
-    double t;
-    const Vec2 q = closestOnSegment(x, position_[segmentEnds_[2 * s]], position_[segmentEnds_[2 * s + 1]], t);
-    visit(s, q, t, lengthSquared(x - q));
-  });
-}
-
-bool PackingSimulation::nearestFarOwnSkinPoint(int v, const MeshInstance& mesh, Vec2& closest) const {
-  const Vec2 x = position_[v];
+PackingSimulation::OwnSkin PackingSimulation::ownSkinQuery(int v, const MeshInstance& mesh) const {
   // Only nearer than half its clearance at rest: a drawn notch or a neighbouring ear is not a fold.
   const double reach = std::min(parameters_.cellSize, kSelfClearanceShare * restSelfClearance_[v] * mesh.growth);
-  double best = reach * reach;
-  bool found = false;
-  forEachFarOwnSegment(v, mesh, [&](int s, Vec2 q, double t, double d2) {
-    if (d2 >= best) return;
-    const int a = segmentEnds_[2 * s], b = segmentEnds_[2 * s + 1];
-    const Vec2 normal = t <= 0.0 ? vertexNormal_[a] : (t >= 1.0 ? vertexNormal_[b] : segmentNormal_[s]);
-    if (dot(x - q, normal) <= 0.0) return;  // across its own body, not a limb coming from outside
-    best = d2;
-    closest = q;
-    found = true;
-  });
-  return found;
+  OwnSkin own;
+  own.vertex = v;
+  own.reach2 = reach * reach;
+  return own;
 }
 
-Vec2 PackingSimulation::pocketPressure(int v, const MeshInstance& mesh, const SkinHits& near) const {
+Vec2 PackingSimulation::pocketPressure(int v, const MeshInstance& mesh, const SkinHits& near, const OwnSkin& own) const {
   const SimulationParameters& P = parameters_;
   const double clearance = P.pocketClearance, reach = P.cellSize;
   double free2 = reach * reach;
@@ -250,7 +249,7 @@ Vec2 PackingSimulation::pocketPressure(int v, const MeshInstance& mesh, const Sk
   if (cross(normalized(x - before), normalized(after - x)) < -kPocketReflexTurn) return {};
   // A drawn notch (between two ears, say) is not a pocket: the element's own skin away from v
   // along the ring counts as a neighbour.
-  forEachFarOwnSegment(v, mesh, [&](int, Vec2, double, double d2) { free2 = std::min(free2, d2); });
+  free2 = std::min(free2, own.nearest2);
   double free = std::sqrt(free2);
   if (free <= clearance) return {};
   if (!periodic()) {
@@ -348,7 +347,10 @@ void PackingSimulation::computeForces(std::size_t vertexBegin, std::size_t verte
 
     // Closest skin point of each neighbouring mesh within the cut-off.
     SkinHits near;
-    nearestSkinPoints(x, m, near);
+    const bool onSkin = static_cast<int>(v) - mesh.vertexBegin < mesh.boundaryCount;
+    OwnSkin own;
+    if (onSkin && (P.selfRepulsion > 0.0 || P.pocketPressure > 0.0)) own = ownSkinQuery(static_cast<int>(v), mesh);
+    nearestSkinPoints(x, m, near, own.vertex >= 0 ? &own : nullptr);
     bool inside = false;
     double depth2 = 0.0;
     for (int k = 0; k < near.size() && !inside; ++k)
@@ -365,16 +367,12 @@ void PackingSimulation::computeForces(std::size_t vertexBegin, std::size_t verte
       }
     } else {
       for (const SkinHit& hit : near) f += forces::repulsion(x, hit.point, P.repulsionStrength, P.soft);
-      if (P.selfRepulsion > 0.0 && static_cast<int>(v) - mesh.vertexBegin < mesh.boundaryCount) {
-        Vec2 closest;
-        if (nearestFarOwnSkinPoint(static_cast<int>(v), mesh, closest))
-          f += forces::repulsion(x, closest, P.repulsionStrength * P.selfRepulsion, P.soft);
-      }
+      if (P.selfRepulsion > 0.0 && own.approached)
+        f += forces::repulsion(x, own.closest, P.repulsionStrength * P.selfRepulsion, P.soft);
       // Not in the clean-up for a mesh pressed deep into another: it would keep it pressed in.
       const bool pressedIn = settling_ && mesh.deep;
-      if (P.pocketPressure > 0.0 && !pressedIn && static_cast<int>(v) - mesh.vertexBegin < mesh.boundaryCount &&
-          !canGrow(mesh))
-        f += pocketPressure(static_cast<int>(v), mesh, near);
+      if (P.pocketPressure > 0.0 && !pressedIn && onSkin && !canGrow(mesh))
+        f += pocketPressure(static_cast<int>(v), mesh, near, own);
     }
     insideOther_[v] = inside ? 1 : 0;
     insideDepth2_[v] = depth2;

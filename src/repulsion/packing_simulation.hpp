@@ -7,6 +7,7 @@
 #include <array>
 #include <cassert>
 #include <cstdint>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -160,19 +161,26 @@ class PackingSimulation {
     bool nearerThan(const SkinHit& other) const { return d2 < other.d2; }
   };
   using SkinHits = NearestHitList<SkinHit, kMaxNeighbours>;
-  void nearestSkinPoints(Vec2 p, int excludeMesh, SkinHits& hits) const;
-  // Self-repulsion: the closest point of v's own skin, away from v along the ring, that v
-  // approaches from outside (a limb bending onto its own body), nearer than half the
-  // distance between them at rest and within the cut-off.
-  bool nearestFarOwnSkinPoint(int v, const MeshInstance& mesh, Vec2& closest) const;
-  // visit(segment, closest point, its parameter t, squared distance) for each skin segment of
-  // v's own mesh in the 3 × 3 cells around it, other than the kSelfNeighbourhood next to v.
-  template <class Visit>
-  void forEachFarOwnSegment(int v, const MeshInstance& mesh, Visit&& visit) const;
+  // What the same grid traversal finds of a boundary vertex v's own skin, away from v along the
+  // ring (other than the kSelfNeighbourhood segments next to it), in the 3 × 3 cells around it.
+  struct OwnSkin {
+    int vertex = -1;        // v; -1: not looked for (an interior vertex, or a periodic clone)
+    double reach2 = 0.0;    // self-repulsion's reach, squared (see ownSkinQuery)
+    double nearest2 = std::numeric_limits<double>::infinity();  // nearest far own segment: a drawn notch is not a pocket
+    // Self-repulsion: the nearest far own point within the reach that v approaches from
+    // outside (a limb bending onto its own body); valid when `approached`.
+    Vec2 closest;
+    bool approached = false;
+  };
+  // The hits of p (other meshes than excludeMesh) and, when own.vertex ≥ 0, its own skin.
+  void nearestSkinPoints(Vec2 p, int excludeMesh, SkinHits& hits, OwnSkin* own = nullptr) const;
+  // The OwnSkin query of boundary vertex v: the reach is the cut-off, or half the distance
+  // between v and the far skin at rest when that is nearer.
+  OwnSkin ownSkinQuery(int v, const MeshInstance& mesh) const;
   // Outward push on a skin vertex bordering a pocket (SimulationParameters::pocketPressure).
-  Vec2 pocketPressure(int v, const MeshInstance& mesh, const SkinHits& near) const;
+  Vec2 pocketPressure(int v, const MeshInstance& mesh, const SkinHits& near, const OwnSkin& own) const;
   // Periodic domain (tile mode): the hits of p - offset, reported at the clone `image`.
-  void nearestSkinPointsOf(Vec2 p, Vec2 offset, int image, int excludeMesh, SkinHits& hits) const;
+  void nearestSkinPointsOf(Vec2 p, Vec2 offset, int image, int excludeMesh, SkinHits& hits, OwnSkin* own) const;
   bool periodic() const { return domain_.period.x > 0.0 && domain_.period.y > 0.0; }
   Vec2 periodicOffset(int image) const;
   // A mesh whose centre left the tile moves whole by ±W / ±H (never single vertices).
@@ -200,7 +208,7 @@ class PackingSimulation {
   std::vector<double> insideDepth2_;  // squared depth inside the other mesh (0: not inside)
   std::vector<double> outsideDepth_;  // distance outside the container (0: inside); past outsideTolerance it blocks growth
   std::vector<double> triangleRestArea_;  // signed, at growth 1
-  std::vector<double> restSelfClearance_;  // per vertex, at growth 1 (see nearestFarOwnSkinPoint)
+  std::vector<double> restSelfClearance_;  // per vertex, at growth 1 (see ownSkinQuery)
   std::vector<Vec2> restDirection_;  // rest offset from the mesh centre, for torsion
   std::vector<Vec2> vertexNormal_;   // outward pseudo-normal (boundary vertices)
   // Springs by vertex; each spring appears once at each end.
@@ -211,6 +219,13 @@ class PackingSimulation {
   std::vector<std::array<int, 3>> triangles_;
   // Skin segments: ends and owning mesh; outward normals updated every step.
   std::vector<int> segmentEnds_, segmentMesh_;
+  // Each skin segment's ends and mesh, copied side by side once a step: the neighbour search
+  // reads them for every segment in the 3 × 3 cells, and one load is cheaper than three.
+  struct SegmentCopy {
+    Vec2 a, b;
+    int mesh = -1;
+  };
+  std::vector<SegmentCopy> segmentCopy_;
   std::vector<Vec2> segmentNormal_;
   std::vector<Vec2> meshCentre_;
   std::vector<std::uint8_t> meshOnCorner_;  // a container corner is inside this mesh

@@ -37,7 +37,7 @@ void SegmentGrid::rebuild(const Vec2* positions, const int* ends, std::size_t se
     int i0, i1, j0, j1;
     cellRange(s, i0, i1, j0, j1);
     for (int j = j0; j <= j1; ++j)
-      for (int i = i0; i <= i1; ++i) entries_[cellFill_[j * nx_ + i]++] = static_cast<int>(s);
+      for (int i = i0; i <= i1; ++i) entries_[cellFill_[j * nx_ + i]++] = {static_cast<int>(s), i0, j0};
   }
 }
 

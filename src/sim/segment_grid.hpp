@@ -17,8 +17,8 @@ class SegmentGrid {
   // Segment s runs from positions[ends[2s]] to positions[ends[2s+1]].
   void rebuild(const Vec2* positions, const int* ends, std::size_t segmentCount);
 
-  // Calls visit(segmentIndex) for every segment registered in the (2r+1)² cells around p.
-  // A segment spanning several cells may be visited more than once.
+  // Calls visit(segmentIndex) once for every segment registered in the (2r+1)² cells around p,
+  // in the order the cells are scanned (rows, then columns).
   template <class Visit>
   void forEachNear(Vec2 p, int r, Visit&& visit) const {
     int ci = cellX(p.x), cj = cellY(p.y);
@@ -27,7 +27,11 @@ class SegmentGrid {
     for (int j = j0; j <= j1; ++j)
       for (int i = i0; i <= i1; ++i) {
         int c = j * nx_ + i;
-        for (int k = cellStart_[c]; k < cellStart_[c + 1]; ++k) visit(entries_[k]);
+        for (int k = cellStart_[c]; k < cellStart_[c + 1]; ++k) {
+          const Entry& e = entries_[k];
+          // A segment spanning several cells is visited in the first of them the scan meets.
+          if (std::max(e.firstI, i0) == i && std::max(e.firstJ, j0) == j) visit(e.segment);
+        }
       }
   }
 
@@ -41,7 +45,11 @@ class SegmentGrid {
   int nx_ = 1, ny_ = 1;
   std::vector<int> cellStart_;  // CSR offsets, size nx*ny + 1
   std::vector<int> cellFill_;   // per-cell write cursor during rebuild
-  std::vector<int> entries_;    // segment indices grouped by cell
+  struct Entry {
+    int segment;
+    int firstI, firstJ;  // the lowest cell column and row the segment is registered in
+  };
+  std::vector<Entry> entries_;  // segments grouped by cell
 };
 
 }  // namespace pak

@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <set>
+#include <vector>
 
 using namespace pak;
 
@@ -49,4 +51,25 @@ TEST(SegmentGrid, RebuildFollowsMovedSegments) {
   EXPECT_EQ(hits, 0);
   grid.forEachNear({75, 75}, 0, [&](int) { ++hits; });
   EXPECT_EQ(hits, 1);
+}
+
+TEST(SegmentGrid, VisitsASegmentSpanningSeveralCellsOnceInScanOrder) {
+  // Segment 0 spans 3 × 3 cells; segment 1 lies in one cell below-right of its first one.
+  std::vector<Vec2> p = {{5, 5}, {25, 25}, {35, 35}, {36, 36}};
+  std::vector<int> ends = {0, 1, 2, 3};
+  SegmentGrid grid;
+  Box area;
+  area.add(Vec2{0, 0});
+  area.add(Vec2{100, 100});
+  grid.configure(area, 10.0, 2);
+  grid.rebuild(p.data(), ends.data(), 2);
+  for (Vec2 at : {Vec2{15, 15}, Vec2{25, 25}, Vec2{5, 25}, Vec2{35, 35}}) {
+    std::vector<int> seen;
+    grid.forEachNear(at, 1, [&](int s) { seen.push_back(s); });
+    const int zeros = static_cast<int>(std::count(seen.begin(), seen.end(), 0));
+    EXPECT_EQ(zeros, 1) << at.x << "," << at.y;
+  }
+  std::vector<int> seen;
+  grid.forEachNear({30, 30}, 1, [&](int s) { seen.push_back(s); });
+  EXPECT_EQ(seen, (std::vector<int>{0, 1}));  // row 2 holds segment 0 before row 3 holds 1
 }
