@@ -36,6 +36,7 @@ OptionTable<RepulsionOptions> repulsionOptionTable() {
       {"secondary-separation", field(&O::secondary, &P::separation), "d_sep: secondary seeds keep at least this far apart (canonical units; 0: L, the nominal secondary size)"},
       {"secondary-resolution", field(&O::secondary, &P::resolution), "distance transform cells across the container for seeding secondaries"},
       {"secondary-target-fill", field(&O::secondary, &P::targetFill), "the secondary pass stops when skins (and fixed elements) cover this fraction of the container"},
+      {"secondary-press", field(&O::secondary, &P::pressIterations), "after the secondary pass stops, the primaries (frozen through it) are freed and all elements are pressed into the pockets left for this many iterations before the clean-up (0: none, as in the thesis)"},
       {"shape-matching", field(&O::shapeMatching, &CornerDockingOptions::enabled), "place elements that fit the container's sharp convex corners there first and dock them (thesis 4.7)"},
       {"docking-strength", field(&O::shapeMatching, &CornerDockingOptions::dockingStrength), "with --shape-matching: spring strength holding each matched element's tip on its corner"},
       {"orientation-torsion", field(&O::orientation, &OrientationOptions::torsion), "k_tor used with --orientation upright/field when --k-torsion is 0"},

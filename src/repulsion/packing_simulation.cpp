@@ -299,7 +299,7 @@ void PackingSimulation::fitClusters() {
 }
 
 void PackingSimulation::grow() {
-  settling_ = false;
+  mode_ = Mode::Grow;
   releaseHolds();
 }
 
@@ -369,9 +369,10 @@ void PackingSimulation::computeForces(std::size_t vertexBegin, std::size_t verte
       for (const SkinHit& hit : near) f += forces::repulsion(x, hit.point, P.repulsionStrength, P.soft);
       if (P.selfRepulsion > 0.0 && own.approached)
         f += forces::repulsion(x, own.closest, P.repulsionStrength * P.selfRepulsion, P.soft);
-      // Not in the clean-up for a mesh pressed deep into another: it would keep it pressed in.
-      const bool pressedIn = settling_ && mesh.deep;
-      if (P.pocketPressure > 0.0 && !pressedIn && onSkin && !canGrow(mesh))
+      // While growing, on the meshes that stopped; after, on all but one pressed deep into
+      // another: it would keep it pressed in.
+      const bool pressed = mode_ == Mode::Grow ? !canGrow(mesh) : !mesh.deep;
+      if (P.pocketPressure > 0.0 && pressed && onSkin)
         f += pocketPressure(static_cast<int>(v), mesh, near, own);
     }
     insideOther_[v] = inside ? 1 : 0;
@@ -577,8 +578,8 @@ void PackingSimulation::step() {
   // wall keeps growing until its art crosses it).
   double total = 0.0, rest = 0.0;
   for (MeshInstance& mesh : meshes_) {
-    if (!settling_) mesh.growth = growthRule_.next(mesh.growth, canGrow(mesh));
-    else if (needsSettling(mesh)) mesh.growth = growthRule_.shrunk(mesh.growth);
+    if (mode_ == Mode::Grow) mesh.growth = growthRule_.next(mesh.growth, canGrow(mesh));
+    else if (mode_ == Mode::Settle && needsSettling(mesh)) mesh.growth = growthRule_.shrunk(mesh.growth);
     total += mesh.area;
     rest += mesh.restArea * mesh.growth * mesh.growth;
   }

@@ -48,7 +48,7 @@ struct MeshInstance {
   double restArea = 0.0;        // skin area at growth 1
   int container = 0;            // which of setContainerParts' regions holds it
   double restAngle = 0.0;       // the angle it was added with (radians)
-  double settleFloor = 0.0;     // the clean-up shrinks it no smaller than this growth
+  double settleFloor = -1.0;    // the clean-up shrinks it no smaller than this growth (< 0: not set yet)
 };
 
 class PackingSimulation {
@@ -83,14 +83,23 @@ class PackingSimulation {
   struct Dock { int vertex; Vec2 anchor; };
   void setDocks(std::vector<Dock> docks, double strength) { docks_ = std::move(docks); dockStrength_ = strength; }
 
-  // Growth: Grow (thesis 4.5.1: meshes with room grow) or Settle (the clean-up after a pass:
-  // nothing grows, and a mesh with a vertex deeper than `depth` inside another one, or pushed
-  // out of the container, shrinks a growth step).
+  // Growth: Grow (thesis 4.5.1: meshes with room grow; the pocket pressure acts on those that
+  // stopped), Press or Settle. In both of these nothing grows, and the pocket pressure acts on
+  // every mesh but one with a vertex deeper than `depth` inside another (it would keep it in).
+  // Press: nothing shrinks either.
+  // Settle (the clean-up after a pass): a mesh with a vertex deeper than `depth` inside another
+  // one, or pushed out of the container, shrinks a growth step, to no less than floorShare ×
+  // its growth now, or the floor it already has (settleFloor ≥ 0).
   void grow();
-  void settle(double depth, double floorShare) {
-    settling_ = true;
+  void press(double depth) {
+    mode_ = Mode::Press;
     settleDepth2_ = depth * depth;
-    for (MeshInstance& m : meshes_) m.settleFloor = m.growth * floorShare;
+  }
+  void settle(double depth, double floorShare) {
+    mode_ = Mode::Settle;
+    settleDepth2_ = depth * depth;
+    for (MeshInstance& m : meshes_)
+      if (m.settleFloor < 0.0) m.settleFloor = m.growth * floorShare;
   }
   // Meshes the clean-up still shrinks: not frozen, with a vertex deeper than the settle depth
   // inside another mesh or beyond the tolerance outside the container.
@@ -194,7 +203,8 @@ class PackingSimulation {
   GrowthRule growthRule_;  // no cap: a mesh grows while it has room
   ThreadPool& pool_;
   bool finalized_ = false;
-  bool settling_ = false;
+  enum class Mode { Grow, Press, Settle };
+  Mode mode_ = Mode::Grow;
   double settleDepth2_ = 0.0;
   int iteration_ = 0;
   double fill_ = 0.0;

@@ -44,6 +44,7 @@ void checkOptions(const RepulsionOptions& o) {
   if (o.secondary.resolution < 16 || o.secondary.resolution > 8000)
     throw InputError("--secondary-resolution", "must be between 16 and 8000 cells");
   positive(o.secondary.targetFill, "--secondary-target-fill");
+  if (o.secondary.pressIterations < 0) throw InputError("--secondary-press", "must not be negative");
   nonNegative(o.shapeMatching.dockingStrength, "--docking-strength");
   if (o.tiling.size != Vec2{} && !isTiled(o.tiling.size)) throw InputError("--tile", "must be two positive numbers W,H");
   if (o.shapeMatching.enabled && isTiled(o.tiling.size))
@@ -264,11 +265,23 @@ std::vector<Fold> foldedMeshes(const PackingSimulation& sim, const std::vector<P
   return folds;
 }
 
+namespace {
+// Skins are the art offset by half the gap: a vertex less than a quarter of the gap inside
+// another skin leaves the two arts at least three quarters of the gap apart.
+constexpr double kSettleDepthShare = 0.25;
+}  // namespace
+
+int press(PackingSimulation& sim, const RepulsionRun& run, const RepulsionStopRule& stop, int iterations) {
+  const int start = sim.iteration();
+  const Deadline deadline(run.started, stop.timeLimit);
+  sim.press(kSettleDepthShare * run.options.gap);
+  while (sim.iteration() - start < iterations && !deadline.passed()) sim.step();
+  sim.grow();
+  return sim.iteration() - start;
+}
+
 int settle(PackingSimulation& sim, const RepulsionRun& run, const RepulsionStopRule& stop,
            const std::vector<PreparedElement>& types) {
-  // Skins are the art offset by half the gap: a vertex less than a quarter of the gap inside
-  // another skin leaves the two arts at least three quarters of the gap apart.
-  constexpr double kSettleDepthShare = 0.25;
   // …but none shrinks below this share of its growth unless its art overlaps or leaves the
   // container: a skin pressed into another by pocket pressure is usually harmless.
   constexpr double kSettleFloor = 0.95;

@@ -61,6 +61,11 @@ void setUpContainers(const RepulsionRun& run, PackingSimulation& sim);
 // The primary simulation with the seeded meshes, finalized.
 PackingSimulation primarySimulation(const RepulsionRun& run, const Seeding& seeding, ThreadPool& pool);
 
+// Pressing after a pass and before its clean-up: `iterations` steps (or until the time limit)
+// in which nothing grows or shrinks and every mesh not pressed deeper than a quarter of the
+// gap into another bulges into the pockets next to it (PackingSimulation::press). Returns the
+// iterations it took.
+int press(PackingSimulation& sim, const RepulsionRun& run, const RepulsionStopRule& stop, int iterations);
 // The clean-up after a pass, at most RepulsionStopRule::settleIterations steps with nothing
 // growing: each element deeper than a quarter of the gap inside another or pushed out of the
 // container shrinks until none is; then, while some element's art crosses itself, a few rounds

@@ -66,6 +66,7 @@ void secondaryPass(const RepulsionRun& run, const PackingSimulation& primary, co
     for (const MeshInstance& m : primary.meshes()) {
       const int id = second.addMesh(types[m.type].mesh, m.type, {}, 0.0, m.growth, true);
       second.meshes()[id].container = m.container;
+      second.meshes()[id].settleFloor = m.settleFloor;  // the clean-up shrinks none below its first floor
       std::copy(primary.positions().begin() + m.vertexBegin, primary.positions().begin() + m.vertexBegin + m.vertexCount,
                 second.positions().begin() + second.meshes()[id].vertexBegin);
     }
@@ -98,6 +99,12 @@ void secondaryPass(const RepulsionRun& run, const PackingSimulation& primary, co
     RepulsionStopRule stop = options.stop;
     stop.stallEpsilon *= static_cast<double>(pockets.size()) * secondaryArea / setup.containerArea;
     pass.stopReason = simulate(second, run, stop, options.secondary.targetFill, primaryIterations, callbacks, collect);
+    // The primaries, frozen while the secondaries grew, are freed and pressed with them into
+    // the pockets both left (docs/secondary-fixed-rigid.md); then the clean-up.
+    if (options.secondary.pressIterations > 0 && pass.stopReason != StopReason::TimeLimit) {
+      for (std::size_t m = 0; m < primary.meshes().size(); ++m) second.meshes()[m].frozen = primary.meshes()[m].frozen;
+      press(second, run, stop, options.secondary.pressIterations);
+    }
     pass.settleIterations = settle(second, run, stop, types);
     pass.iterations = second.iteration();
     Packing result = relabel(cleanArt(run, second, types));

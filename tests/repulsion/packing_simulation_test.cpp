@@ -71,6 +71,29 @@ TEST(PackingSimulation, GrowthIsBlockedWhileOverlapping) {
   EXPECT_FALSE(sim.vertexInsideOther(1));
 }
 
+TEST(PackingSimulation, PressNeitherGrowsNorShrinksAndBulgesAMeshWithRoom) {
+  SimulationParameters p = boxParameters();
+  p.pocketPressure = 50.0;
+  p.pocketClearance = 5.0;
+  BoxSimulation scene(p);
+  PackingSimulation& sim = scene.sim;
+  sim.addMesh(squareMesh(), 0, {30, 50}, 0.0, 0.5);      // room all around: it could grow
+  sim.addMesh(squareMesh(), 0, {70, 50}, 0.0, 1.0);
+  sim.addMesh(squareMesh(), 0, {77, 51}, 0.0, 1.0);      // 3 units deep into the previous one
+  sim.finalize(area(100));
+  const double restArea = sim.meshes()[0].area;
+  sim.press(1.0);
+  for (int i = 0; i < 20; ++i) sim.step();
+  EXPECT_DOUBLE_EQ(sim.meshes()[0].growth, 0.5);
+  EXPECT_DOUBLE_EQ(sim.meshes()[1].growth, 1.0);  // deep, but pressing shrinks nothing
+  EXPECT_DOUBLE_EQ(sim.meshes()[2].growth, 1.0);
+  // Growing, a mesh with room feels no pocket pressure; pressed, it bulges into the room.
+  EXPECT_GT(sim.meshes()[0].area, 1.02 * restArea);
+  sim.settle(1.0, 0.5);
+  sim.step();
+  EXPECT_LT(sim.meshes()[1].growth, 1.0);  // the clean-up shrinks what pressing did not
+}
+
 TEST(PackingSimulation, BoundaryForcePushesOutsideVertexIn) {
   BoxSimulation scene;
   PackingSimulation& sim = scene.sim;

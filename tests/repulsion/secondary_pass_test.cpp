@@ -94,6 +94,7 @@ TEST(SecondaryPass, FillsPocketsWithoutMovingPrimariesOrOverlapping) {
   Library secondary = loadLibrary({kExamples + "/elements/star.svg", kExamples + "/elements/moon.svg"});
   RepulsionOptions options = quickOptions();
   options.stop.maxIterations = 450;  // per pass
+  options.secondary.pressIterations = 0;  // the thesis's pass: the primaries stay frozen
   Packing primaryOnly = packRepulsion(scene, library, options);
   Packing packing = packRepulsion(scene, library, secondary, options);
 
@@ -141,6 +142,37 @@ TEST(SecondaryPass, FillsPocketsWithoutMovingPrimariesOrOverlapping) {
        at = svg.find("class=\"element secondary\"", at + 1))
     ++marked;
   EXPECT_EQ(marked, static_cast<std::size_t>(secondaries));
+}
+
+TEST(SecondaryPass, PressingFreesThePrimariesAndLeavesTheResultClean) {
+  Scene scene = loadScene(kExamples + "/scene.svg").scene;
+  Library library = loadLibrary({kExamples + "/elements/cat.svg", kExamples + "/elements/fish.svg",
+                                 kExamples + "/elements/bird.svg"});
+  Library secondary = loadLibrary({kExamples + "/elements/star.svg", kExamples + "/elements/moon.svg"});
+  RepulsionOptions options = quickOptions();
+  options.stop.maxIterations = 450;  // per pass
+  options.secondary.pressIterations = 0;
+  const Packing frozen = packRepulsion(scene, library, secondary, options);
+  options.secondary.pressIterations = 200;
+  const Packing pressed = packRepulsion(scene, library, secondary, options);
+
+  // The same pockets get the same secondaries; the press and the clean-up come after.
+  ASSERT_EQ(pressed.passes.size(), 2u);
+  EXPECT_EQ(pressed.passes[1].elements, frozen.passes[1].elements);
+  EXPECT_GE(pressed.passes[1].iterations, 200 + pressed.passes[1].settleIterations);
+  // Some primary moved, and none is gone.
+  ASSERT_EQ(pressed.elements.size(), frozen.elements.size());
+  int moved = 0;
+  for (std::size_t i = 0; i < pressed.elements.size(); ++i)
+    if (!pressed.elements[i].secondary && artPoints(pressed.elements[i]) != artPoints(frozen.elements[i])) ++moved;
+  EXPECT_GT(moved, 0);
+  PackingCheckOptions check;
+  check.areaTolerance = 1e-5 * area(pressed.container);
+  const PackingCheck result = verifyPacking(artOutlines(pressed), pressed.container, check);
+  EXPECT_TRUE(result.ok) << (result.problems.empty() ? "" : result.problems.front());
+  EXPECT_EQ(result.overlappingPairs, 0);
+  EXPECT_EQ(result.elementsOutside, 0);
+  EXPECT_EQ(result.selfIntersecting, 0);
 }
 
 TEST(SecondaryPass, NoPocketDeepEnoughMeansNoSecondaries) {

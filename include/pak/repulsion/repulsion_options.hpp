@@ -38,6 +38,10 @@ struct SecondaryPassOptions {
   // The pass stops at this total skin fill (primaries, secondaries and fixed elements), else
   // by eq. 4.7 or the iteration cap as the primary pass.
   double targetFill = 0.95;
+  // After the pass stops, the primaries (frozen through it) are freed and every element is
+  // pressed into the pockets left for this many iterations, nothing growing, before the
+  // clean-up. 0: none (the thesis: the primaries stay where the primary pass left them).
+  int pressIterations = 300;
 };
 
 // Shape matching (4.7): elements whose shape fits are placed at the container's salient
