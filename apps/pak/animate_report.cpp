@@ -49,12 +49,18 @@ nlohmann::json animateReport(const AnimateArguments& args, const AnimatedPacking
   report["frames-with-self-intersecting-outline"] = audit.framesSelfIntersecting;
   report["most-overlapping-pairs-in-a-frame"] = audit.worstPairs;
   report["largest-overlap-area-fraction"] = audit.worstOverlapArea;
+  // The counts above are of the frames as written, after the separation.
+  report["frames-separated"] = audit.framesSeparated;
+  report["smallest-separation-scale"] = audit.smallestSeparationScale;
   report["seconds"] = {{"setup", animation.setupSeconds},
-                       {"simulation", animation.seconds - animation.setupSeconds},
+                       {"simulation", animation.seconds - animation.setupSeconds - animation.separationSeconds},
+                       {"frame-separation", animation.separationSeconds},
                        {"rendering", times.rendering},
                        {"wall", times.wall}};
   report["seconds-per-iteration"] =
-      animation.iterations > 0 ? (animation.seconds - animation.setupSeconds) / animation.iterations : 0.0;
+      animation.iterations > 0
+          ? (animation.seconds - animation.setupSeconds - animation.separationSeconds) / animation.iterations
+          : 0.0;
   return report;
 }
 

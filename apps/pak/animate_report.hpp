@@ -14,6 +14,9 @@ struct FrameAudit {
   int framesWithOverlap = 0, framesOutside = 0, framesSelfIntersecting = 0, worstPairs = 0;
   double worstOverlapArea = 0.0;  // fraction of the container
   double meanFill = 0.0;          // art fill, mean over frames
+  // Frame separation (FrameSeparationOptions): frames it changed, the smallest scale it gave.
+  int framesSeparated = 0;
+  double smallestSeparationScale = 1.0;
 };
 FrameAudit auditFrames(const std::vector<Packing>& frames, const Region& container);
 

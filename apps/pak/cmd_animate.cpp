@@ -1,4 +1,5 @@
 // `pak animate`: AnimationPak from the command line.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -84,16 +85,30 @@ int runAnimate(AnimateArguments& args, const CLI::App& command) {
     callbacks.onCheckpoint = [&](const AnimationState& state) { writeAnimationCheckpoint(state, fingerprint, args.checkpoint); };
   }
 
-  const AnimatedPacking animation =
-      packAnimation(scene, library, script, args.options, callbacks, args.resume.empty() ? nullptr : &resumed);
-  const auto simulated = Clock::now();
-
   // Frames at evenly spaced t (5.6); a loop's last frame would repeat the first.
   const int frameCount = args.frames > 0 ? args.frames : script.frames;
+  // The frame separation checks at least every frame written (FrameSeparationOptions::samples).
+  AnimationOptions options = args.options;
+  if (options.frameSeparation.samples == 0)
+    options.frameSeparation.samples = std::max(frameCount, 2 * (options.slices > 0 ? options.slices : script.slices));
+  const AnimatedPacking animation =
+      packAnimation(scene, library, script, options, callbacks, args.resume.empty() ? nullptr : &resumed);
+  const auto simulated = Clock::now();
+
   auto frameTime = [&](int i, int count) {
     return script.loop ? static_cast<double>(i) / count : (count > 1 ? static_cast<double>(i) / (count - 1) : 0.0);
   };
-  auto drawingAt = [&](double t) { return packingDrawing(input.layout, animationFrame(animation, t)); };
+  // packAnimation separated the frames at its samples; a frame between them that still
+  // overlaps is separated on its own (`scale`: the smallest scale that gave an element).
+  auto frameAt = [&](double t, double& scale) {
+    Packing frame = animationFrame(animation, t);
+    scale = separateFrame(frame, options.frameSeparation);
+    return frame;
+  };
+  auto drawingAt = [&](double t) {
+    double scale;
+    return packingDrawing(input.layout, frameAt(t, scale));
+  };
   AnimationOutputOptions output;
   output.duration = script.duration;
   output.loop = script.loop;
@@ -104,9 +119,14 @@ int runAnimate(AnimateArguments& args, const CLI::App& command) {
   std::vector<Drawing> frames;
   packings.reserve(frameCount);
   frames.reserve(frameCount);
+  int framesSeparated = 0;
+  double smallestScale = 1.0;
   for (int i = 0; i < frameCount; ++i) {
-    packings.push_back(animationFrame(animation, frameTime(i, frameCount)));
+    double scale;
+    packings.push_back(frameAt(frameTime(i, frameCount), scale));
     frames.push_back(packingDrawing(input.layout, packings.back()));
+    framesSeparated += scale < 1.0 ? 1 : 0;
+    smallestScale = std::min(smallestScale, scale);
   }
   if (!args.noGif) writeGif(frames, (out / "animation.gif").string(), output);
   if (args.pngFrames) writePngFrames(frames, (out / "frames").string(), output);
@@ -133,7 +153,9 @@ int runAnimate(AnimateArguments& args, const CLI::App& command) {
   }
   const auto rendered = Clock::now();
 
-  const FrameAudit audit = auditFrames(packings, animation.container);
+  FrameAudit audit = auditFrames(packings, animation.container);
+  audit.framesSeparated = framesSeparated;
+  audit.smallestSeparationScale = smallestScale;
   AnimateTimes times;
   times.wall = std::chrono::duration<double>(Clock::now() - start).count();
   times.simulation = std::chrono::duration<double>(simulated - start).count();

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "animation/frame_separation.hpp"
 #include "pak/animation/animation.hpp"
 
 namespace pak {
@@ -36,7 +37,8 @@ Packing animationFrame(const AnimatedPacking& animation, double t) {
     placed.meshTriangles = element.mesh.mesh.triangles;
     placed.skin.assign(vertices.begin(), vertices.begin() + element.mesh.boundaryCount);
     const double areaHere = std::abs(signedArea(placed.skin)) * animation.canonicalScale * animation.canonicalScale;
-    skinArea += areaHere;
+    const double separation = separationScaleAt(animation, e, t);
+    skinArea += areaHere * separation * separation;
     // Strokes scale with the element's linear size in this frame.
     const double strokeScale =
         element.restSkinArea > 0.0 ? std::sqrt(areaHere / element.restSkinArea) / animation.canonicalScale : 1.0;
@@ -47,6 +49,7 @@ Packing animationFrame(const AnimatedPacking& animation, double t) {
       for (Subpath& sub : shape.subpaths)
         for (Vec2& p : sub.points) p = artPoints[k++];
     }
+    scaleAboutCentre(placed, separation);  // frame separation (separateAnimation)
     packing.elements.push_back(std::move(placed));
   }
   const double containerArea = area(animation.container) * animation.canonicalScale * animation.canonicalScale;

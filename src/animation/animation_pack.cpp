@@ -30,6 +30,10 @@ AnimatedPacking packAnimation(const Scene& scene, const Library& library, const 
   const auto setUp = Clock::now();
   const AnimationStop stop = simulateAnimation(sim, run, callbacks, resumeFrom);
   AnimatedPacking result = collectAnimation(run, seeding, sim, stop, pool);
+  result.loop = script.loop;
+  const auto separating = Clock::now();
+  separateAnimation(result, options.frameSeparation, pool.threadCount());
+  result.separationSeconds = std::chrono::duration<double>(Clock::now() - separating).count();
   result.setupSeconds = std::chrono::duration<double>(setUp - started).count();
   result.seconds = std::chrono::duration<double>(Clock::now() - started).count();
   return result;

@@ -45,6 +45,12 @@ void checkOptions(const AnimationOptions& o, int slices) {
   if (o.stop.stallWindow < 1) throw InputError("--stall-window", "must be at least 1");
   if (o.stop.maxIterations < 0) throw InputError("--max-iterations", "must not be negative");
   nonNegative(o.stop.timeLimit, "--time-limit");
+  const FrameSeparationOptions& f = o.frameSeparation;
+  if (f.rounds < 0 || f.rounds > 100) throw InputError("--frame-separation", "must be between 0 and 100 rounds");
+  if (!(f.step > 0.0 && f.step < 1.0)) throw InputError("--frame-separation", "the step must be in (0, 1)");
+  nonNegative(f.areaTolerance, "--frame-separation");
+  if (f.samples < 0 || f.samples > 100000) throw InputError("--frame-separation-samples", "must be between 0 and 100000");
+  if (!(f.ramp >= 0.0 && f.ramp <= 0.5)) throw InputError("--frame-separation-ramp", "must be in [0, 0.5]");
 }
 
 double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }

@@ -60,6 +60,8 @@ struct AnimatedElement {
   std::vector<double> sliceTimes;            // t ∈ [0, 1] of each slice
   std::vector<std::vector<Vec2>> slices;     // each slice's mesh vertices, input coordinates
   std::vector<double> sliceGrowth;           // g of each slice
+  // Frame separation: its scale at AnimatedPacking::separationTimes (empty: none).
+  std::vector<double> separationScale;
 };
 
 struct AnimatedPacking {
@@ -74,8 +76,11 @@ struct AnimatedPacking {
   int slices = 0;
   double seconds = 0.0;          // set up and simulation
   double setupSeconds = 0.0;
+  double separationSeconds = 0.0;  // of `seconds`: the frame separation (separateAnimation)
   int threads = 1;
   std::uint64_t seed = 1;
+  bool loop = false;             // the script loops: t = 1 is t = 0
+  std::vector<double> separationTimes;  // ascending t of the frame separation's samples
 };
 
 AnimatedPacking packAnimation(const Scene& scene, const Library& library, const AnimationScript& script,
@@ -86,5 +91,14 @@ AnimatedPacking packAnimation(const Scene& scene, const Library& library, const 
 // around t and its art replayed on it (thesis 5.6). A static Packing, so every RepulsionPak
 // output (SVG, PNG, verifyPacking, metrics) works on a frame.
 Packing animationFrame(const AnimatedPacking& animation, double t);
+
+// Frame separation (FrameSeparationOptions, docs/animationpak.md), done by packAnimation:
+// frames at `samples` evenly spaced t are separated, and each element's shrinking is eased
+// over `ramp` of t on either side; animationFrame applies the result at any t.
+void separateAnimation(AnimatedPacking& animation, const FrameSeparationOptions& options, int threads = 1);
+// One frame's separation, the safety net at t between the samples: each offending element
+// shrinks a step per round until the frame is clean. Returns the smallest scale it gave an
+// element (1: the frame was clean, or rounds = 0); `scales`, when given, gets every element's.
+double separateFrame(Packing& frame, const FrameSeparationOptions& options, std::vector<double>* scales = nullptr);
 
 }  // namespace pak

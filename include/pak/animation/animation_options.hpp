@@ -19,6 +19,19 @@ struct AnimationStopRule {
   double timeLimit = 0.0;  // seconds of wall time from the start of the run; 0: none
 };
 
+// A frame between two slices interpolates them, and two elements passing each other can
+// overlap there by a sliver (thesis 5.8). Each element of a frame in an overlapping pair (or
+// out of the container) by more than areaTolerance × the container's area, as verifyPacking
+// sees the art, is scaled about its skin's centre by `step`, for at most `rounds` rounds, until
+// none is. rounds = 0: frames as interpolated (the thesis).
+struct FrameSeparationOptions {
+  int rounds = 10;
+  double step = 0.99;
+  double areaTolerance = 1e-6;
+  int samples = 0;     // frames checked over t ∈ [0, 1]; 0: twice the slices
+  double ramp = 0.05;  // an element's shrinking eases in and out over this much of t
+};
+
 struct AnimationOptions {
   int slices = 0;                 // n_s; 0: the script's
   // Nominal skin area of one element (growth 1) as a fraction of the container's area;
@@ -32,6 +45,7 @@ struct AnimationOptions {
   SimulationParameters simulation{.torsionStrength = 10.0, .cellSize = 40.0};
   SpacetimeParameters spacetime;
   AnimationStopRule stop;
+  FrameSeparationOptions frameSeparation;
   RunOptions run;
 };
 

@@ -1,0 +1,13 @@
+#pragma once
+// Frame separation's pieces shared with animationFrame (see FrameSeparationOptions).
+#include "pak/animation/animation.hpp"
+
+namespace pak {
+
+// Scales the placed element (mesh, skin, art and strokes) about its skin's centre.
+void scaleAboutCentre(PlacedElement& element, double factor);
+// Element e's separation scale at t, interpolated between the animation's separation samples
+// (1 when it has none).
+double separationScaleAt(const AnimatedPacking& animation, std::size_t e, double t);
+
+}  // namespace pak

@@ -1,0 +1,126 @@
+// Frame separation: sliver overlaps between slices shrunk away, eased over t.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "animation/animation_fixtures.hpp"
+#include "animation/frame_separation.hpp"
+#include "pak/animation/animation.hpp"
+#include "pak/geom/verify.hpp"
+
+namespace pak {
+namespace {
+
+PlacedElement square(double x0, double y0, double side) {
+  PlacedElement e;
+  const Ring ring{{x0, y0}, {x0 + side, y0}, {x0 + side, y0 + side}, {x0, y0 + side}};
+  e.skin = ring;
+  e.meshVertices = ring;
+  Shape shape;
+  shape.fill = Color{0, 0, 0};
+  shape.subpaths.push_back(Subpath{ring, true});
+  e.art = {shape};
+  return e;
+}
+
+Packing threeSquares() {
+  Packing frame;
+  frame.container = {Polygon{{{0, 0}, {100, 0}, {100, 100}, {0, 100}}, {}}};
+  frame.elements = {square(10, 10, 20), square(29, 12, 20), square(70, 70, 20)};  // the first two overlap by 1
+  return frame;
+}
+
+PackingCheck checked(const Packing& frame) {
+  PackingCheckOptions options;
+  options.areaTolerance = 1e-6 * area(frame.container);
+  return verifyPacking(artOutlines(frame), frame.container, options);
+}
+
+TEST(FrameSeparation, ShrinksOnlyTheOverlappingPairUntilTheFrameIsClean) {
+  Packing frame = threeSquares();
+  ASSERT_EQ(checked(frame).overlappingPairs, 1);
+  std::vector<double> scales;
+  const double smallest = separateFrame(frame, {}, &scales);
+  EXPECT_EQ(checked(frame).overlappingPairs, 0);
+  ASSERT_EQ(scales.size(), 3u);
+  // 1 of 20 overlaps: each square must lose 5 % of its width, six rounds of 1 %.
+  EXPECT_NEAR(scales[0], std::pow(0.99, 6), 1e-12);
+  EXPECT_NEAR(scales[1], std::pow(0.99, 6), 1e-12);
+  EXPECT_EQ(scales[2], 1.0);
+  EXPECT_EQ(smallest, std::min(scales[0], scales[1]));
+  EXPECT_EQ(frame.elements[2].skin, threeSquares().elements[2].skin);  // the bystander is untouched
+}
+
+TEST(FrameSeparation, ShrinksAboutTheCentreAndKeepsStrokesInProportion) {
+  PlacedElement e = square(10, 10, 20);
+  e.art[0].strokeWidth = 2.0;
+  scaleAboutCentre(e, 0.5);
+  EXPECT_EQ(e.skin, (Ring{{15, 15}, {25, 15}, {25, 25}, {15, 25}}));
+  EXPECT_EQ(e.art[0].subpaths[0].points, e.skin);
+  EXPECT_EQ(e.meshVertices, e.skin);
+  EXPECT_DOUBLE_EQ(e.art[0].strokeWidth, 1.0);
+}
+
+TEST(FrameSeparation, NoRoundsChangeNothing) {
+  Packing frame = threeSquares();
+  FrameSeparationOptions none;
+  none.rounds = 0;
+  EXPECT_EQ(separateFrame(frame, none), 1.0);
+  EXPECT_EQ(frame.elements[0].skin, threeSquares().elements[0].skin);
+}
+
+TEST(FrameSeparation, ScaleBetweenSamplesIsInterpolatedAndALoopWrapsToTheFirst) {
+  AnimatedPacking a;
+  a.elements.resize(1);
+  a.separationTimes = {0.0, 0.5};
+  a.elements[0].separationScale = {1.0, 0.9};
+  EXPECT_DOUBLE_EQ(separationScaleAt(a, 0, 0.25), 0.95);
+  EXPECT_DOUBLE_EQ(separationScaleAt(a, 0, 0.75), 0.9);  // no loop: the last sample holds
+  a.loop = true;
+  EXPECT_DOUBLE_EQ(separationScaleAt(a, 0, 0.75), 0.95);  // a loop comes back to t = 0's
+  a.elements[0].separationScale.clear();
+  EXPECT_EQ(separationScaleAt(a, 0, 0.3), 1.0);
+}
+
+TEST(FrameSeparation, PackedFramesAtTheSamplesAreCleanAndTheShrinkingIsEased) {
+  AnimationOptions options = test::quickAnimationOptions();
+  options.stop.maxIterations = 400;  // long enough for the stars to press each other
+  options.frameSeparation.samples = 40;
+  AnimationOptions unseparated = options;
+  unseparated.frameSeparation.rounds = 0;
+  const AnimatedPacking raw =
+      packAnimation(test::discScene(), {test::starElement("star.svg")}, test::spinningStars(8), unseparated);
+  EXPECT_TRUE(raw.separationTimes.empty());
+  int overlapping = 0;  // the frames between slices, as interpolated, have slivers
+  for (int k = 0; k < 40; ++k) overlapping += checked(animationFrame(raw, k / 40.0)).overlappingPairs > 0 ? 1 : 0;
+  EXPECT_GT(overlapping, 0);
+
+  const AnimatedPacking a = packAnimation(test::discScene(), {test::starElement("star.svg")}, test::spinningStars(8), options);
+  ASSERT_EQ(a.separationTimes.size(), 40u);
+  for (double t : a.separationTimes) {
+    const PackingCheck check = checked(animationFrame(a, t));
+    EXPECT_EQ(check.overlappingPairs, 0) << "t = " << t;
+    EXPECT_EQ(check.elementsOutside, 0) << "t = " << t;
+  }
+  // Between neighbouring samples no element's scale changes faster than the ramp allows: its
+  // deepest shrinking over `ramp` of t.
+  const double dt = a.separationTimes[1] - a.separationTimes[0];
+  int shrunk = 0;
+  for (const AnimatedElement& e : a.elements) {
+    ASSERT_EQ(e.separationScale.size(), a.separationTimes.size());
+    const double deepest = 1.0 - *std::min_element(e.separationScale.begin(), e.separationScale.end());
+    shrunk += deepest > 0.0 ? 1 : 0;
+    for (std::size_t k = 1; k < e.separationScale.size(); ++k)
+      EXPECT_LE(std::abs(e.separationScale[k] - e.separationScale[k - 1]), deepest / options.frameSeparation.ramp * dt + 1e-12);
+  }
+  EXPECT_GT(shrunk, 0);
+
+  // The same on two threads, to the bit.
+  options.run.threads = 2;
+  const AnimatedPacking b = packAnimation(test::discScene(), {test::starElement("star.svg")}, test::spinningStars(8), options);
+  for (std::size_t e = 0; e < a.elements.size(); ++e) EXPECT_EQ(a.elements[e].separationScale, b.elements[e].separationScale);
+}
+
+}  // namespace
+}  // namespace pak
