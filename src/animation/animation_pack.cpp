@@ -2,6 +2,7 @@
 #include <chrono>
 
 #include "animation/animation_phases.hpp"
+#include "animation/frame_separation.hpp"
 #include "pak/animation/animation.hpp"
 #include "pak/error.hpp"
 
@@ -32,7 +33,7 @@ AnimatedPacking packAnimation(const Scene& scene, const Library& library, const 
   AnimatedPacking result = collectAnimation(run, seeding, sim, stop, pool);
   result.loop = script.loop;
   const auto separating = Clock::now();
-  separateAnimation(result, options.frameSeparation, pool.threadCount());
+  separateAnimation(result, options.frameSeparation, pool);
   result.separationSeconds = std::chrono::duration<double>(Clock::now() - separating).count();
   result.setupSeconds = std::chrono::duration<double>(setUp - started).count();
   result.seconds = std::chrono::duration<double>(Clock::now() - started).count();

@@ -9,7 +9,6 @@
 #include <cmath>
 
 #include "pak/geom/verify.hpp"
-#include "sim/parallel.hpp"
 
 namespace pak {
 
@@ -63,6 +62,11 @@ double separateFrame(Packing& frame, const FrameSeparationOptions& options, std:
 }
 
 void separateAnimation(AnimatedPacking& animation, const FrameSeparationOptions& options, int threads) {
+  ThreadPool pool(threads);
+  separateAnimation(animation, options, pool);
+}
+
+void separateAnimation(AnimatedPacking& animation, const FrameSeparationOptions& options, ThreadPool& pool) {
   animation.separationTimes.clear();
   for (AnimatedElement& e : animation.elements) e.separationScale.clear();
   if (options.rounds == 0 || animation.elements.empty()) return;
@@ -99,7 +103,6 @@ void separateAnimation(AnimatedPacking& animation, const FrameSeparationOptions&
   // what they still need is added, a few times.
   constexpr int kPasses = 3;
   std::vector<std::vector<double>> needed(static_cast<std::size_t>(n), std::vector<double>(count, 1.0));
-  ThreadPool pool(threads);
   for (int pass = 0; pass < kPasses; ++pass) {
     std::vector<char> more(static_cast<std::size_t>(n), 0);
     if (pass > 0) animation.separationTimes = times;  // animationFrame applies the profile

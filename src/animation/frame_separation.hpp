@@ -1,6 +1,7 @@
 #pragma once
 // Frame separation's pieces shared with animationFrame (see FrameSeparationOptions).
 #include "pak/animation/animation.hpp"
+#include "sim/parallel.hpp"
 
 namespace pak {
 
@@ -9,5 +10,7 @@ void scaleAboutCentre(PlacedElement& element, double factor);
 // Element e's separation scale at t, interpolated between the animation's separation samples
 // (1 when it has none).
 double separationScaleAt(const AnimatedPacking& animation, std::size_t e, double t);
+// separateAnimation on the caller's pool (packAnimation's, once the simulation is done).
+void separateAnimation(AnimatedPacking& animation, const FrameSeparationOptions& options, ThreadPool& pool);
 
 }  // namespace pak
