@@ -44,6 +44,7 @@ nlohmann::json animateReport(const AnimateArguments& args, const AnimatedPacking
   report["skin-fill-mean-over-slices"] = animation.fill;
   report["art-fill-mean-over-frames"] = audit.meanFill;
   report["overlapping-slices-at-end"] = animation.overlappingSlices;
+  report["unfolded-slices"] = animation.unfoldedSlices;
   report["frames-with-overlaps"] = audit.framesWithOverlap;
   report["frames-with-element-outside"] = audit.framesOutside;
   report["frames-with-self-intersecting-outline"] = audit.framesSelfIntersecting;

@@ -13,6 +13,7 @@
 #include "pak/geom/rng.hpp"
 #include "sim/canonical_frame.hpp"
 #include "sim/deadline.hpp"
+#include "sim/fold_relaxation.hpp"
 #include "sim/simulation_loop.hpp"
 #include "sim/stall_window.hpp"
 
@@ -352,7 +353,7 @@ AnimationStop simulateAnimation(SpacetimeSimulation& sim, const AnimationRun& ru
 }
 
 AnimatedPacking collectAnimation(const AnimationRun& run, const AnimationSeeding& seeding, const SpacetimeSimulation& sim,
-                                 AnimationStop stop, const ThreadPool& pool) {
+                                 AnimationStop stop, ThreadPool& pool) {
   const CanonicalFrame& frame = run.setup.frame;
   const int slices = run.slices;
   AnimatedPacking result;
@@ -370,15 +371,46 @@ AnimatedPacking collectAnimation(const AnimationRun& run, const AnimationSeeding
     out.restSkinArea = shared.mesh.skinArea;
     const int n = sim.verticesPerSlice(static_cast<int>(e));
     const int begin = sim.vertexBegin(static_cast<int>(e));
+    out.slices.resize(slices);
     for (int s = 0; s < slices; ++s) {
-      std::vector<Vec2> vertices(n);
-      for (int v = 0; v < n; ++v) vertices[v] = frame.toInput(spatial(sim.positions()[begin + s * n + v]));
-      out.slices.push_back(std::move(vertices));
+      std::vector<Vec2>& vertices = out.slices[s];
+      vertices.resize(n);
+      for (int v = 0; v < n; ++v) vertices[v] = spatial(sim.positions()[begin + s * n + v]);
       out.sliceTimes.push_back(sim.positions()[begin + s * n].t / run.options.spacetime.timeLength);
       out.sliceGrowth.push_back(sim.growth()[e * slices + s]);
     }
     result.elements.push_back(std::move(out));
   }
+  // A slice whose art folds over itself (a limb pressed across the body; the spacetime forces
+  // do not see the art) is relaxed toward its animated rest shape, as RepulsionPak's clean-up
+  // does; the frames on either side follow it smoothly. Elements are independent: in parallel.
+  std::vector<int> unfolded(result.elements.size(), 0);
+  pool.parallelFor(result.elements.size(), 1, [&](std::size_t elementBegin, std::size_t elementEnd) {
+    std::vector<Vec2> crossings, artPoints;
+    Ring ring;
+    for (std::size_t e = elementBegin; e < elementEnd; ++e) {
+      const AnimatedInstance& instance = seeding.instances[e];
+      const PreparedElement& element = run.meshes[run.types[instance.type].mesh];
+      AnimatedElement& out = result.elements[e];
+      for (int s = 0; s < slices; ++s) {
+        std::vector<Vec2>& vertices = out.slices[s];
+        const int n = static_cast<int>(vertices.size());
+        auto firstFold = [&]() -> std::optional<Vec2> {
+          crossings.clear();
+          appendArtFolds(element, vertices.data(), crossings, artPoints, ring);
+          if (crossings.empty()) return std::nullopt;
+          return crossings.front();
+        };
+        auto restore = [&](double keep, Vec2 at, double radius) {
+          blendTowardRest(vertices.data(), instance.reference.data() + static_cast<std::ptrdiff_t>(s) * n, n,
+                          out.sliceGrowth[s], keep, at, radius, [](int) {});
+        };
+        unfolded[e] += relaxFold(run.options.simulation.cellSize, firstFold, restore) ? 1 : 0;
+        for (Vec2& p : vertices) p = frame.toInput(p);
+      }
+    }
+  });
+  for (int count : unfolded) result.unfoldedSlices += count;
   result.container = run.scene.container;
   result.canonicalScale = frame.scale;
   result.iterations = sim.iteration();

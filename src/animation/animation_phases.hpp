@@ -75,6 +75,6 @@ AnimationStop simulateAnimation(SpacetimeSimulation& sim, const AnimationRun& ru
 
 // The slices in input coordinates, with the run's statistics.
 AnimatedPacking collectAnimation(const AnimationRun& run, const AnimationSeeding& seeding, const SpacetimeSimulation& sim,
-                                 AnimationStop stop, const ThreadPool& pool);
+                                 AnimationStop stop, ThreadPool& pool);
 
 }  // namespace pak

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "pak/geom/best_fit_rotation.hpp"
+#include "sim/fold_relaxation.hpp"
 #include "sim/forces.hpp"
 
 namespace pak {
@@ -442,31 +443,9 @@ void PackingSimulation::contractMesh(int m, double factor) {
 
 void PackingSimulation::restoreRestShape(int m, double keep, Vec2 around, double radius) {
   const MeshInstance& mesh = meshes_[m];
-  const int begin = mesh.vertexBegin, end = mesh.vertexBegin + mesh.vertexCount;
-  auto weight = [&](int v) {  // 1 at `around`, falling to 0 at the radius
-    return std::isinf(radius) ? 1.0 : std::max(0.0, 1.0 - distance(position_[v], around) / radius);
-  };
-  Vec2 centre, restMean;
-  double total = 0.0;
-  for (int v = begin; v < end; ++v) {
-    const double w = weight(v);
-    centre += position_[v] * w;
-    restMean += restDirection_[v] * w;
-    total += w;
-  }
-  if (!(total > 0.0)) return;
-  centre = centre / total;
-  restMean = restMean / total;
-  BestFitRotation fit;
-  for (int v = begin; v < end; ++v) fit.add(restDirection_[v] - restMean, position_[v] - centre, weight(v));
-  const Vec2 turn = fit.turn();
-  for (int v = begin; v < end; ++v) {
-    const double w = weight(v);
-    if (w == 0.0) continue;
-    const Vec2 rest = centre + rotated((restDirection_[v] - restMean) * mesh.growth, turn);
-    position_[v] += (rest - position_[v]) * (w * (1.0 - keep));
-    velocity_[v] = Vec2{};
-  }
+  Vec2* velocity = velocity_.data() + mesh.vertexBegin;
+  blendTowardRest(position_.data() + mesh.vertexBegin, restDirection_.data() + mesh.vertexBegin, mesh.vertexCount,
+                  mesh.growth, keep, around, radius, [&](int v) { velocity[v] = Vec2{}; });
 }
 
 int PackingSimulation::projectInside() {

@@ -11,6 +11,7 @@
 #include "pak/repulsion/tiling.hpp"
 #include "repulsion/container_seeding.hpp"
 #include "sim/deadline.hpp"
+#include "sim/fold_relaxation.hpp"
 #include "sim/simulation_loop.hpp"
 #include "sim/stall_window.hpp"
 
@@ -243,24 +244,14 @@ StopReason simulate(PackingSimulation& sim, const RepulsionRun& run, const Repul
 
 std::vector<Fold> foldedMeshes(const PackingSimulation& sim, const std::vector<PreparedElement>& types) {
   std::vector<Fold> folds;
-  std::vector<Vec2> artPoints;
+  std::vector<Vec2> crossings, artPoints;
   Ring ring;
   for (std::size_t m = 0; m < sim.meshes().size(); ++m) {
     const MeshInstance& mesh = sim.meshes()[m];
     if (mesh.frozen) continue;
-    const PreparedElement& type = types[mesh.type];
-    replayArt(type.mesh, sim.positions().data() + mesh.vertexBegin, artPoints);
-    std::size_t k = 0;
-    for (const Shape& shape : type.art)
-      for (const Subpath& sub : shape.subpaths) {
-        ring.assign(artPoints.begin() + static_cast<std::ptrdiff_t>(k),
-                    artPoints.begin() + static_cast<std::ptrdiff_t>(k + sub.points.size()));
-        k += sub.points.size();
-        if (!shape.fill) continue;
-        // A ring drawn crossing itself (petals drawn as one ring) is not a fold.
-        if (const auto crossing = ringSelfCrossing(ring); crossing && !ringSelfIntersects(sub.points))
-          folds.push_back({static_cast<int>(m), *crossing});
-      }
+    crossings.clear();
+    appendArtFolds(types[mesh.type], sim.positions().data() + mesh.vertexBegin, crossings, artPoints, ring);
+    for (Vec2 at : crossings) folds.push_back({static_cast<int>(m), at});
   }
   return folds;
 }
@@ -412,21 +403,20 @@ std::vector<std::size_t> artOffenders(const RepulsionRun& run, const PackingSimu
 }
 
 std::vector<char> relaxFolds(PackingSimulation& sim, const std::vector<PreparedElement>& types) {
-  // The mesh around the crossing first, in widening patches (× the neighbour cell), each time
-  // a quarter of the way back; then the whole mesh, halfway and at last all the way.
-  constexpr double kPatches[] = {1.5, 2.0, 3.0, 4.5};
-  constexpr int kSteps = 6;
-  const double inf = std::numeric_limits<double>::infinity();
   std::vector<char> relaxed(sim.meshes().size(), 0);
-  for (int step = 0; step < kSteps; ++step) {
-    const std::vector<Fold> folds = foldedMeshes(sim, types);
-    if (folds.empty()) break;
-    for (const Fold& fold : folds) {
-      if (relaxed[fold.mesh] == step + 1) continue;  // a second crossing of the same mesh
-      if (step < 4) sim.restoreRestShape(fold.mesh, 0.25, fold.at, kPatches[step] * sim.parameters().cellSize);
-      else sim.restoreRestShape(fold.mesh, step == 4 ? 0.5 : 0.0, fold.at, inf);
-      relaxed[fold.mesh] = static_cast<char>(step + 1);
-    }
+  std::vector<Vec2> crossings, artPoints;
+  Ring ring;
+  for (std::size_t m = 0; m < sim.meshes().size(); ++m) {
+    const MeshInstance& mesh = sim.meshes()[m];
+    if (mesh.frozen) continue;
+    auto firstFold = [&]() -> std::optional<Vec2> {
+      crossings.clear();
+      appendArtFolds(types[mesh.type], sim.positions().data() + mesh.vertexBegin, crossings, artPoints, ring);
+      if (crossings.empty()) return std::nullopt;
+      return crossings.front();
+    };
+    auto restore = [&](double keep, Vec2 at, double radius) { sim.restoreRestShape(static_cast<int>(m), keep, at, radius); };
+    relaxed[m] = relaxFold(sim.parameters().cellSize, firstFold, restore) ? 1 : 0;
   }
   return relaxed;
 }

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "animation/animation_fixtures.hpp"
+#include "sim/fold_relaxation.hpp"
 
 namespace pak {
 namespace {
@@ -46,6 +47,54 @@ TEST(AnimationPhases, InOrderTheyArePackAnimation) {
   EXPECT_EQ(byPhases.stopReason, packed.stopReason);
   ASSERT_EQ(byPhases.elements.size(), packed.elements.size());
   for (std::size_t e = 0; e < packed.elements.size(); ++e) EXPECT_EQ(byPhases.elements[e].slices, packed.elements[e].slices);
+}
+
+TEST(AnimationPhases, CollectingUnfoldsASliceFoldedOverItself) {
+  const Scene scene = test::discScene();
+  const Library library{test::starElement("star.svg")};
+  const AnimationScript script = test::spinningStars(3);
+  const AnimationOptions options = test::quickAnimationOptions();
+  const AnimationRun run = prepareAnimation(scene, library, script, options);
+  const AnimationSeeding seeding = seedAnimation(run);
+  ThreadPool pool(options.run.threads);
+  SpacetimeSimulation sim = spacetimeSimulation(run, seeding, pool, nullptr);
+  const AnimationStop stop = simulateAnimation(sim, run, {}, nullptr);
+  const PreparedElement& element = run.meshes[run.types[0].mesh];
+  std::vector<Vec2> folds, artPoints, slice;
+  Ring ring;
+  auto foldsOf = [&](const std::vector<Vec2>& vertices) {
+    folds.clear();
+    appendArtFolds(element, vertices.data(), folds, artPoints, ring);
+    return folds.size();
+  };
+  EXPECT_EQ(collectAnimation(run, seeding, sim, stop, pool).unfoldedSlices, 0);
+
+  // The skin vertex nearest a tip of element 1's star in slice 2 pulled across the body, far past
+  // the centre: the tip bound to its triangles is dragged over the rest of the star.
+  constexpr int kElement = 1, kSlice = 2;
+  std::vector<Vec3> x = sim.positions();
+  const int n = sim.verticesPerSlice(kElement), first = sim.vertexBegin(kElement) + kSlice * n;
+  for (int k = 0; k < n; ++k) slice.push_back(spatial(x[first + k]));
+  replayArt(element.mesh, slice.data(), artPoints);
+  int v = first;
+  for (int k = 0; k < element.mesh.boundaryCount; ++k)
+    if (distance(slice[k], artPoints[0]) < distance(slice[v - first], artPoints[0])) v = first + k;
+  Vec2 centre;
+  for (Vec2 p : slice) centre += p / static_cast<double>(n);
+  const Vec2 across = centre + (centre - spatial(x[v])) * 3.0;
+  x[v].x = across.x;
+  x[v].y = across.y;
+  slice[v - first] = across;
+  ASSERT_GT(foldsOf(slice), 0u);
+  sim.restoreState(sim.iteration(), x, sim.velocities(), sim.growth());
+
+  const AnimatedPacking collected = collectAnimation(run, seeding, sim, stop, pool);
+  EXPECT_EQ(collected.unfoldedSlices, 1);
+  EXPECT_EQ(foldsOf(collected.elements[kElement].slices[kSlice]), 0u);
+  // Only the folded slice moved: its neighbour in time is as simulated.
+  const std::vector<Vec2>& before = collected.elements[kElement].slices[kSlice - 1];
+  for (int k = 0; k < n; ++k)
+    EXPECT_EQ(before[k], run.setup.frame.toInput(spatial(x[first - n + k])));
 }
 
 TEST(AnimationPhases, TheTimeLimitStopsTheRun) {
