@@ -12,6 +12,7 @@ struct AnimateArguments {
   CommonArguments common{.every = 100};  // -o is the output folder; --every paces --checkpoint
   std::string container, animation, checkpoint, resume, video;
   int frames = 0, width = 480, sheetFrames = 5, svgKeyframes = 60;
+  double pngAt = 0.0;  // t of the --png preview
   bool pngFrames = false, svgFrames = false, noGif = false;
   AnimationOptions options;  // also --config keys and report parameters (animateOptions)
 };

@@ -62,6 +62,19 @@ nlohmann::json animateReport(const AnimateArguments& args, const AnimatedPacking
       animation.iterations > 0
           ? (animation.seconds - animation.setupSeconds - animation.separationSeconds) / animation.iterations
           : 0.0;
+  // What each count means, for a reader of the report without the docs at hand.
+  report["legend"] = {
+      {"skin-fill-mean-over-slices", "area of the elements' skins (art offset by half the gap) over the container's, mean over slices"},
+      {"art-fill-mean-over-frames", "area painted by the art over the container's, mean over the rendered frames"},
+      {"overlapping-slices-at-end", "slices with a vertex inside another element when the simulation stopped (before the frame separation)"},
+      {"unfolded-slices", "slices whose art crossed itself and were relaxed toward their rest shape after the simulation"},
+      {"frames-with-overlaps", "rendered frames in which two elements' art overlaps by more than 1e-6 of the container's area"},
+      {"frames-with-element-outside", "rendered frames with art outside the container by more than that"},
+      {"frames-with-self-intersecting-outline", "rendered frames with an element whose art outline crosses itself"},
+      {"most-overlapping-pairs-in-a-frame", "the largest number of overlapping pairs in one rendered frame"},
+      {"largest-overlap-area-fraction", "the largest overlap area in one rendered frame, over the container's area"},
+      {"frames-separated", "rendered frames in which the frame separation shrank an element"},
+      {"smallest-separation-scale", "the smallest scale the frame separation gave an element in a rendered frame (1: none shrank)"}};
   return report;
 }
 

@@ -10,6 +10,7 @@
 #include "command.hpp"
 #include "input_warnings.hpp"
 #include "output_files.hpp"
+#include "run_eta.hpp"
 #include "pak/error.hpp"
 #include "pak/io/animation_checkpoint.hpp"
 #include "pak/io/animation_output.hpp"
@@ -42,6 +43,7 @@ void checkOutputOptions(const AnimateArguments& args) {
   if (args.sheetFrames < 1 || args.sheetFrames > 100) throw InputError("--sheet-frames", "must be between 1 and 100");
   if (args.svgKeyframes < 2 || args.svgKeyframes > 10000) throw InputError("--svg-keyframes", "must be between 2 and 10000");
   if (args.frames < 0 || args.frames > 10000) throw InputError("--frames", "must be between 1 and 10000");
+  if (!(args.pngAt >= 0.0 && args.pngAt <= 1.0)) throw InputError("--png-at", "must be a time t between 0 and 1");
 }
 
 int runAnimate(AnimateArguments& args, const CLI::App& command) {
@@ -50,6 +52,8 @@ int runAnimate(AnimateArguments& args, const CLI::App& command) {
   const CommonArguments& common = args.common;
   if (!common.config.empty()) animateOptions().applyConfig(common.config, command, args);
   checkOutputOptions(args);
+  if (!args.video.empty()) checkVideoTarget(args.video);  // before the simulation, not after it
+  if (command.count("--png-at") > 0 && common.png.empty()) throw InputError("--png-at", "needs --png FILE, the preview it times");
 
   const AnimationScript script = readAnimationScript(args.animation);
   const LoadedScene input = loadScene(args.container, SceneOptions{});
@@ -71,13 +75,18 @@ int runAnimate(AnimateArguments& args, const CLI::App& command) {
   const std::filesystem::path out(common.output);
 
   AnimationCallbacks callbacks;
+  RunEta eta(args.options.stop.maxIterations);
   if (!common.quiet)
     callbacks.onProgress = [&](const AnimationProgress& p) {
       const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
-      std::fprintf(stderr,
-                   "pak animate: iteration %5d  fill %.3f  growing %d/%d slices  overlapping %d  widest gap %.1f  %.1f s\n",
-                   p.iteration, p.fill, p.growingSlices, p.slices, p.overlappingSlices,
-                   std::isfinite(p.largestSliceGap) ? p.largestSliceGap : -1.0, elapsed);
+      char gap[40] = "";
+      if (std::isfinite(p.largestSliceGap)) std::snprintf(gap, sizeof gap, "  widest gap %.1f", p.largestSliceGap);
+      // The stall rule's measure falls about exponentially: its logarithm, linearly.
+      std::fprintf(stderr, "pak animate: iteration %5d  fill %.3f  growing %d/%d slices  overlapping %d%s  %.1f s  %s\n",
+                   p.iteration, p.fill, p.growingSlices, p.slices, p.overlappingSlices, gap, elapsed,
+                   eta.record(p.iteration, elapsed, {static_cast<double>(p.growingSlices),
+                                                     p.largestSliceGap - args.options.stop.closeness,
+                                                     std::log(p.growthRise / args.options.stop.stallGrowth)}).c_str());
       std::fflush(stderr);
     };
   if (!args.checkpoint.empty()) {
@@ -132,7 +141,7 @@ int runAnimate(AnimateArguments& args, const CLI::App& command) {
   if (args.pngFrames) writePngFrames(frames, (out / "frames").string(), output);
   if (args.svgFrames) writeSvgFrames(frames, (out / "svg-frames").string(), output);
   if (!args.video.empty()) writeVideo(frames, args.video, output);
-  writePngPreview(frames.front(), common.png, args.width);
+  if (!common.png.empty()) writePngPreview(drawingAt(args.pngAt), common.png, args.width);
   {
     const int keys = std::min(args.svgKeyframes, frameCount);
     std::vector<Drawing> keyframes;
@@ -181,13 +190,14 @@ void declareAnimateOptions(CLI::App& command, AnimateArguments& args) {
   command.add_option("--animation,-a", args.animation, "animation file (JSON): elements, counts, tracks, handles, targets, loops; see docs/animation-format.md")->required();
   addCommonOptions(command, args.common,
                    {{CommonOption::Output, "output folder"},
-                    {CommonOption::Png, "also write the first frame (t = 0) as a PNG preview to this file"},
+                    {CommonOption::Png, "also write the frame at --png-at (t = 0 by default) as a PNG preview to this file"},
                     {CommonOption::Config},
                     {CommonOption::Report, "write a JSON report: parameters, sizes, iterations, times, fill, overlaps per frame"},
                     {CommonOption::Every, "with --checkpoint: iterations between saves"}, {CommonOption::Quiet}});
   command.add_option("--frames", args.frames, "frames to render (0: the animation file's, default 500)")->capture_default_str();
   animateOptions().addTo(command, args);
   command.add_option("--width", args.width, "width in pixels of the GIF, PNG frames, video and contact-sheet cells")->capture_default_str();
+  command.add_option("--png-at", args.pngAt, "with --png: the time t ∈ [0, 1] of the preview (any t, not only a frame's)")->capture_default_str();
   command.add_flag("--png-frames", args.pngFrames, "also write OUT/frames/frame-NNNN.png");
   command.add_flag("--svg-frames", args.svgFrames, "also write OUT/svg-frames/frame-NNNN.svg");
   command.add_flag("--no-gif", args.noGif, "skip the GIF");

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <numbers>
 #include <optional>
@@ -301,17 +302,6 @@ SpacetimeSimulation spacetimeSimulation(const AnimationRun& run, const Animation
 AnimationStop simulateAnimation(SpacetimeSimulation& sim, const AnimationRun& run, const AnimationCallbacks& callbacks,
                                 const AnimationState* resumeFrom) {
   const AnimationOptions& options = run.options;
-  auto progress = [&] {
-    AnimationProgress p;
-    p.iteration = sim.iteration();
-    p.fill = sim.fill();
-    p.growingSlices = sim.growingSlices();
-    p.overlappingSlices = sim.overlappingSlices();
-    p.slices = static_cast<int>(sim.growth().size());
-    p.largestSliceGap = sim.largestSliceGap();
-    p.minGrowth = sim.minGrowth();
-    return p;
-  };
   // Mean growth of the last stallWindow + 1 iterations, by iteration number; checkpoints keep
   // it, so a resumed run stops where the uninterrupted one does.
   StallWindow meanGrowth(options.stop.stallWindow);
@@ -322,6 +312,18 @@ AnimationStop simulateAnimation(SpacetimeSimulation& sim, const AnimationRun& ru
       throw InputError("--resume", "the checkpoint is damaged (it recorded more iterations than it ran)");
     meanGrowth.restore(resumeFrom->recentMeanGrowth, resumeFrom->recorded, resumeFrom->iteration);
   }
+  auto progress = [&] {
+    AnimationProgress p;
+    p.iteration = sim.iteration();
+    p.fill = sim.fill();
+    p.growingSlices = sim.growingSlices();
+    p.overlappingSlices = sim.overlappingSlices();
+    p.slices = static_cast<int>(sim.growth().size());
+    p.largestSliceGap = sim.largestSliceGap();
+    p.minGrowth = sim.minGrowth();
+    p.growthRise = meanGrowth.full() ? meanGrowth.rise() : std::numeric_limits<double>::infinity();
+    return p;
+  };
   auto state = [&] {
     return AnimationState{sim.iteration(), sim.positions(), sim.velocities(), sim.growth(), meanGrowth.values(),
                           meanGrowth.recorded()};

@@ -134,6 +134,11 @@ bool videoEncoderAvailable() {
   return pid > 0 && waitFor(pid) == 0;
 }
 
+void checkVideoTarget(const std::string& path) {
+  codecArguments(path);
+  if (!videoEncoderAvailable()) throw InputError(path, kMissing);
+}
+
 void writeVideo(const std::vector<Drawing>& frames, const std::string& path, const AnimationOutputOptions& options) {
   std::vector<std::string> codec = codecArguments(path);
   animation_frames::checkFrames(frames, options, path);

@@ -133,6 +133,43 @@ TEST(CliAnimate, SameFramesWithOneOrTwoThreadsAndAfterResuming) {
   EXPECT_NE(other.err.find("checkpoint"), std::string::npos) << other.err;
 }
 
+TEST(CliAnimate, TheVideoTargetAndThePreviewTimeAreCheckedBeforeTheRun) {
+  ScratchFolder dir("cli-animate-early-checks");
+  // The output folder is made before the simulation starts: these fail before either.
+  for (const std::string& extra : {std::string(" --video ") + shellQuoted(dir.file("v.avi")),
+                                   " --png-at 1.5 --png " + shellQuoted(dir.file("p.png")),
+                                   std::string(" --png-at 0.5")}) {
+    PakRun run = runPak(kStars + extra + " -o " + shellQuoted(dir.file("out")));
+    EXPECT_EQ(run.exitCode, 2) << extra << "\n" << run.err;
+    EXPECT_EQ(run.err.rfind("pak: error: ", 0), 0u) << run.err;
+    EXPECT_FALSE(std::filesystem::exists(dir.path() / "out")) << extra;
+  }
+  EXPECT_NE(runPak(kStars + " --video " + shellQuoted(dir.file("v.avi")) + " -o " + shellQuoted(dir.file("out"))).err.find(
+                "unknown video format"),
+            std::string::npos);
+}
+
+TEST(CliAnimate, ThePreviewIsTheFrameAtPngAt) {
+  ScratchFolder dir("cli-animate-png-at");
+  const std::string common = kStars + " --max-iterations 200 --png-frames -o " + shellQuoted(dir.file("out"));
+  ASSERT_EQ(runPak(common + " --png " + shellQuoted(dir.file("half.png")) + " --png-at 0.5").exitCode, 0);
+  // A loop's 8 frames are at t = k / 8: frame 4 is t = 0.5, frame 0 is not.
+  const PngPixels half = readPngPixels(dir.file("half.png"));
+  const PngPixels frame4 = readPngPixels((dir.path() / "out" / "frames" / "frame-0004.png").string());
+  const PngPixels frame0 = readPngPixels((dir.path() / "out" / "frames" / "frame-0000.png").string());
+  ASSERT_EQ(half.width, frame4.width);
+  ASSERT_EQ(half.height, frame4.height);
+  int sameAs4 = 0, sameAs0 = 0, total = 0;
+  for (int y = 0; y < half.height; y += 3)
+    for (int x = 0; x < half.width; x += 3, ++total) {
+      const Rgba p = half.at(x, y), a = frame4.at(x, y), b = frame0.at(x, y);
+      sameAs4 += (p.r == a.r && p.g == a.g && p.b == a.b) ? 1 : 0;
+      sameAs0 += (p.r == b.r && p.g == b.g && p.b == b.b) ? 1 : 0;
+    }
+  EXPECT_EQ(sameAs4, total);
+  EXPECT_LT(sameAs0, total * 95 / 100);
+}
+
 TEST(CliAnimate, BadInputIsOneLineAndExitCodeTwo) {
   ScratchFolder dir("cli-animate-errors");
   const std::string bad = dir.file("bad.json");

@@ -37,6 +37,7 @@ struct AnimationProgress {
   int growingSlices = 0, overlappingSlices = 0, slices = 0;
   double largestSliceGap = 0.0;  // canonical units
   double minGrowth = 0.0;
+  double growthRise = 0.0;        // mean growth's rise over the stall window (∞ until it is full)
 };
 
 struct AnimationCallbacks {

@@ -34,6 +34,9 @@ void writeAnimatedSvg(const std::vector<Drawing>& frames, const std::string& pat
 void writeGif(const std::vector<Drawing>& frames, const std::string& path, const AnimationOutputOptions& = {});
 // Whether the `ffmpeg` program can be run.
 bool videoEncoderAvailable();
+// Throws InputError unless `path` names a video format writeVideo knows and ffmpeg can be run:
+// for checking before a long run.
+void checkVideoTarget(const std::string& path);
 // MP4 (H.264) or WebM by the file's extension, through the `ffmpeg` program. Throws InputError
 // when ffmpeg is missing or fails.
 void writeVideo(const std::vector<Drawing>& frames, const std::string& path, const AnimationOutputOptions& = {});
