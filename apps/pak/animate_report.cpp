@@ -3,11 +3,14 @@
 #include <algorithm>
 
 #include "art_check.hpp"
+#include "pak/metrics/evenness.hpp"
+#include "pak/metrics/packing_geometry.hpp"
 #include "report_fields.hpp"
 
 namespace pak::cli {
 
-FrameAudit auditFrames(const std::vector<Packing>& frames, const Region& container) {
+FrameAudit auditFrames(const std::vector<Packing>& frames, const std::vector<double>& times, const Region& container,
+                       int evennessFrames) {
   const double containerArea = area(container);
   const double frameCount = static_cast<double>(frames.size());
   FrameAudit audit;
@@ -21,8 +24,27 @@ FrameAudit auditFrames(const std::vector<Packing>& frames, const Region& contain
     audit.worstPairs = std::max(audit.worstPairs, check.overlappingPairs);
     audit.worstOverlapArea = std::max(audit.worstOverlapArea, check.overlapArea / containerArea);
   }
+  const int measured = std::min(evennessFrames, static_cast<int>(frames.size()));
+  for (int k = 0; k < measured; ++k) {
+    const std::size_t i = static_cast<std::size_t>(k) * frames.size() / static_cast<std::size_t>(measured);
+    const Evenness evenness = measureEvenness(packingGeometry(frames[i]));
+    audit.evennessTimes.push_back(times[i]);
+    audit.negativeRatio.push_back(evenness.negativeRatio);
+    audit.pocketShare2.push_back(evenness.pocketShare[1]);
+  }
   return audit;
 }
+
+namespace {
+double median(std::vector<double> values) {
+  if (values.empty()) return 0.0;
+  const std::size_t mid = values.size() / 2;
+  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(mid), values.end());
+  const double upper = values[mid];
+  if (values.size() % 2 == 1) return upper;
+  return 0.5 * (upper + *std::max_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(mid)));
+}
+}  // namespace
 
 nlohmann::json animateReport(const AnimateArguments& args, const AnimatedPacking& animation, int frameCount,
                              const FrameAudit& audit, const AnimateTimes& times) {
@@ -53,6 +75,18 @@ nlohmann::json animateReport(const AnimateArguments& args, const AnimatedPacking
   // The counts above are of the frames as written, after the separation.
   report["frames-separated"] = audit.framesSeparated;
   report["smallest-separation-scale"] = audit.smallestSeparationScale;
+  if (!audit.evennessTimes.empty()) {
+    const auto worst = [](const std::vector<double>& v) { return *std::max_element(v.begin(), v.end()); };
+    report["evenness-over-frames"] = {{"frames", audit.evennessTimes.size()},
+                                      {"negative-ratio-median", median(audit.negativeRatio)},
+                                      {"negative-ratio-worst", worst(audit.negativeRatio)},
+                                      {"P2-median", median(audit.pocketShare2)},
+                                      {"P2-worst", worst(audit.pocketShare2)},
+                                      {"t", audit.evennessTimes},
+                                      {"negative-ratio", audit.negativeRatio},
+                                      {"P2", audit.pocketShare2}};
+  }
+  report["guided-growth-ratio"] = smallestGuidedGrowthRatio(animation);
   report["seconds"] = {{"setup", animation.setupSeconds},
                        {"simulation", animation.seconds - animation.setupSeconds - animation.separationSeconds},
                        {"frame-separation", animation.separationSeconds},
@@ -74,7 +108,9 @@ nlohmann::json animateReport(const AnimateArguments& args, const AnimatedPacking
       {"most-overlapping-pairs-in-a-frame", "the largest number of overlapping pairs in one rendered frame"},
       {"largest-overlap-area-fraction", "the largest overlap area in one rendered frame, over the container's area"},
       {"frames-separated", "rendered frames in which the frame separation shrank an element"},
-      {"smallest-separation-scale", "the smallest scale the frame separation gave an element in a rendered frame (1: none shrank)"}};
+      {"smallest-separation-scale", "the smallest scale the frame separation gave an element in a rendered frame (1: none shrank)"},
+      {"evenness-over-frames", "negative space and pocket share P2 (docs/metrics.md) of --evenness-frames frames spread over the animation: median, worst, and each"},
+      {"guided-growth-ratio", "the smallest, over guided elements and slices, of a guided slice's growth over the median growth of the unguided elements' slices at that t (1 when none is guided)"}};
   return report;
 }
 

@@ -17,8 +17,12 @@ struct FrameAudit {
   // Frame separation (FrameSeparationOptions): frames it changed, the smallest scale it gave.
   int framesSeparated = 0;
   double smallestSeparationScale = 1.0;
+  // Evenness (measureEvenness) of `evennessFrames` frames spread evenly over the animation.
+  std::vector<double> evennessTimes, negativeRatio, pocketShare2;
 };
-FrameAudit auditFrames(const std::vector<Packing>& frames, const Region& container);
+// `times[i]` is the t of frames[i].
+FrameAudit auditFrames(const std::vector<Packing>& frames, const std::vector<double>& times, const Region& container,
+                       int evennessFrames);
 
 struct AnimateTimes {
   double simulation = 0.0, rendering = 0.0, wall = 0.0;  // seconds

@@ -43,6 +43,7 @@ void checkOutputOptions(const AnimateArguments& args) {
   if (args.sheetFrames < 1 || args.sheetFrames > 100) throw InputError("--sheet-frames", "must be between 1 and 100");
   if (args.svgKeyframes < 2 || args.svgKeyframes > 10000) throw InputError("--svg-keyframes", "must be between 2 and 10000");
   if (args.frames < 0 || args.frames > 10000) throw InputError("--frames", "must be between 1 and 10000");
+  if (args.evennessFrames < 0 || args.evennessFrames > 10000) throw InputError("--evenness-frames", "must be between 0 and 10000");
   if (!(args.pngAt >= 0.0 && args.pngAt <= 1.0)) throw InputError("--png-at", "must be a time t between 0 and 1");
 }
 
@@ -162,13 +163,15 @@ int runAnimate(AnimateArguments& args, const CLI::App& command) {
   }
   const auto rendered = Clock::now();
 
-  FrameAudit audit = auditFrames(packings, animation.container);
+  std::vector<double> times(static_cast<std::size_t>(frameCount));
+  for (int i = 0; i < frameCount; ++i) times[i] = frameTime(i, frameCount);
+  FrameAudit audit = auditFrames(packings, times, animation.container, common.report.empty() ? 0 : args.evennessFrames);
   audit.framesSeparated = framesSeparated;
   audit.smallestSeparationScale = smallestScale;
-  AnimateTimes times;
-  times.wall = std::chrono::duration<double>(Clock::now() - start).count();
-  times.simulation = std::chrono::duration<double>(simulated - start).count();
-  times.rendering = std::chrono::duration<double>(rendered - simulated).count();
+  AnimateTimes seconds;
+  seconds.wall = std::chrono::duration<double>(Clock::now() - start).count();
+  seconds.simulation = std::chrono::duration<double>(simulated - start).count();
+  seconds.rendering = std::chrono::duration<double>(rendered - simulated).count();
 
   if (!common.quiet)
     std::fprintf(stderr,
@@ -179,9 +182,9 @@ int runAnimate(AnimateArguments& args, const CLI::App& command) {
                  animation.elements.size(), animation.vertices, animation.springs, animation.slices, animation.iterations,
                  toString(animation.stopReason), audit.meanFill, audit.framesWithOverlap, frameCount, audit.framesOutside,
                  audit.framesSelfIntersecting,
-                 times.simulation, times.rendering, common.output.c_str());
+                 seconds.simulation, seconds.rendering, common.output.c_str());
   if (!common.report.empty())
-    writeFileAtomically(common.report, animateReport(args, animation, frameCount, audit, times).dump(2) + "\n");
+    writeFileAtomically(common.report, animateReport(args, animation, frameCount, audit, seconds).dump(2) + "\n");
   return 0;
 }
 
@@ -202,6 +205,7 @@ void declareAnimateOptions(CLI::App& command, AnimateArguments& args) {
   command.add_flag("--svg-frames", args.svgFrames, "also write OUT/svg-frames/frame-NNNN.svg");
   command.add_flag("--no-gif", args.noGif, "skip the GIF");
   command.add_option("--video", args.video, "also write a video, FILE.mp4 or FILE.webm (needs the ffmpeg program)");
+  command.add_option("--evenness-frames", args.evennessFrames, "with --report: frames, spread over the animation, whose evenness (negative space, pocket share P2) is measured (0: none)")->capture_default_str();
   command.add_option("--sheet-frames", args.sheetFrames, "frames on the contact sheet, evenly spaced in t")->capture_default_str();
   command.add_option("--svg-keyframes", args.svgKeyframes, "frames stored in the animated SVG (the browser interpolates between them)")->capture_default_str();
   command.add_option("--checkpoint", args.checkpoint, "save the simulation state to this file every --every iterations (atomically)");

@@ -37,7 +37,7 @@ int SpacetimeSimulation::addElement(const SpacetimeElementSetup& setup) {
   const int element = static_cast<int>(elements_.size());
   const int vertexBegin = static_cast<int>(position_.size());
   const int sliceBegin = static_cast<int>(growth_.size());
-  elements_.push_back({&mesh, vertexBegin, n, sliceBegin, setup.torsionStrength});
+  elements_.push_back({&mesh, vertexBegin, n, sliceBegin, setup.torsionStrength, !setup.targets.empty()});
 
   const double dt = spacetime_.timeLength / (slices_ - 1);
   for (int s = 0; s < slices_; ++s) {
@@ -162,6 +162,7 @@ void SpacetimeSimulation::finalize(const Box& area) {
   sliceGap_.assign(ns, kFar);
   sliceArea_.assign(ns, 0.0);
   previousGrowth_.assign(ns, 0.0);
+  unguidedGrowth_.assign(elements_.size(), 0.0);
 
   // Collision grid over the container's box (grown by a cell) × [0, timeLength].
   const double cell = parameters_.cellSize;
@@ -400,6 +401,21 @@ void SpacetimeSimulation::computeForces(std::size_t begin, std::size_t end) {
     if (isBoundary_[v] && q.computed) gap = std::min(gap, q.distance);
     nearestGap_[v] = gap;
 
+    // Pocket pressure, as in RepulsionPak: a skin vertex of a slice that stopped growing,
+    // with room around it, bulges into the pocket.
+    if (P.pocketPressure > 0.0 && isBoundary_[v] && !inside && growth_[slice] <= previousGrowth_[slice]) {
+      double free = std::min(gap, P.cellSize);
+      if (free > P.pocketClearance && !q.computed && container_.insideDistanceBound(xy) < free)
+        free = std::min(free, container_.query(xy, true).distance);  // the wall may be nearer
+      const int base = sliceVertexBegin_[slice], nb = element.mesh->boundaryCount, k = static_cast<int>(v) - base;
+      const Vec2 before = spatial(position_[base + (k + nb - 1) % nb]), after = spatial(position_[base + (k + 1) % nb]);
+      if (free > P.pocketClearance && !forces::reflexSkinVertex(before, xy, after)) {
+        const Vec2 normal = normalized(Vec2{xy.y - before.y, before.x - xy.x} + Vec2{after.y - xy.y, xy.x - after.x});
+        const Vec2 push = forces::pocketPressure(normal, free, P.pocketClearance, P.cellSize, P.pocketPressure);
+        f += Vec3{push.x, push.y, 0.0};
+      }
+    }
+
     // Eq. 4.6: the slice turns back toward its reference orientation.
     if (element.torsionStrength > 0.0) {
       const Vec2 restDirection = reference_[v] - referenceCentre_[slice];
@@ -509,6 +525,26 @@ void SpacetimeSimulation::updateSlices(std::size_t begin, std::size_t end) {
   }
 }
 
+void SpacetimeSimulation::keepGuidedUp() {
+  for (int k = 0; k < slices_; ++k) {
+    std::size_t count = 0;
+    for (const ElementRecord& e : elements_)
+      if (!e.guided) unguidedGrowth_[count++] = growth_[e.sliceBegin + k];
+    if (count == 0) return;
+    const auto begin = unguidedGrowth_.begin(), mid = begin + static_cast<std::ptrdiff_t>(count / 2);
+    std::nth_element(begin, mid, begin + static_cast<std::ptrdiff_t>(count));
+    double median = *mid;
+    if (count % 2 == 0) median = 0.5 * (median + *std::max_element(begin, mid));
+    const double floor = spacetime_.guidedGrowth * median;
+    for (const ElementRecord& e : elements_) {
+      const int s = e.sliceBegin + k;
+      // Behind, not grown this step by the common rule, and inside: one growth step.
+      if (e.guided && growth_[s] < floor && growth_[s] == previousGrowth_[s] && !sliceOutside_[s])
+        growth_[s] = growthRule_.grown(growth_[s]);
+    }
+  }
+}
+
 void SpacetimeSimulation::step() {
   assert(finalized_ && "step only after finalize");
   const std::size_t nv = position_.size(), ns = growth_.size();
@@ -520,6 +556,7 @@ void SpacetimeSimulation::step() {
   applyLoopConstraints();
   std::copy(growth_.begin(), growth_.end(), previousGrowth_.begin());
   pool_.parallelFor(ns, 256, [&](std::size_t b, std::size_t e) { updateSlices(b, e); });
+  if (spacetime_.guidedGrowth > 0.0) keepGuidedUp();
 
   // Reductions in a fixed order, so they do not depend on the thread count.
   double area = 0.0, largestGap = 0.0;

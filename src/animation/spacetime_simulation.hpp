@@ -91,6 +91,7 @@ class SpacetimeSimulation {
     const ElementMesh* mesh;
     int vertexBegin, verticesPerSlice, sliceBegin;
     double torsionStrength;
+    bool guided;  // has target points
   };
   struct EnvelopeGroup { int element, begin, end; Vec3 centre; double radius; };
   // The nearest point of another element: exact (on an envelope triangle) or approximate
@@ -115,6 +116,9 @@ class SpacetimeSimulation {
   void applyLoopConstraints();
   void updateSlices(std::size_t begin, std::size_t end);
   void computeSliceCentres();
+  // SpacetimeParameters::guidedGrowth: after the common growth rule, a guided slice below the
+  // share of its slice index's median unguided g grows a step regardless of contacts.
+  void keepGuidedUp();
   std::array<int, 3> cellOf(Vec3 p) const;
 
   const RegionIndex& container_;
@@ -146,6 +150,7 @@ class SpacetimeSimulation {
   // Per global slice.
   std::vector<int> sliceElement_, sliceVertexBegin_;
   std::vector<double> growth_, previousGrowth_, sliceTime_, restTime_;
+  std::vector<double> unguidedGrowth_;  // scratch for keepGuidedUp, one per element
   std::vector<Vec2> referenceCentre_, sliceCentre_;
   std::vector<std::uint8_t> sliceOverlapping_, sliceOutside_;
   std::vector<double> sliceGap_, sliceArea_;

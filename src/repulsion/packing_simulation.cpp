@@ -14,8 +14,6 @@ namespace pak {
 namespace {
 
 constexpr std::size_t kVertexGrain = 256;
-// Pocket pressure skips skin vertices turning inward by more than this (sine of the turn).
-constexpr double kPocketReflexTurn = 0.2;
 // A triangle pushes back once squeezed below this share of its rest area (anti-inversion).
 constexpr double kInversionShare = 0.25;
 // Self-repulsion: skin segments fewer than this many away along the ring are v's own side.
@@ -247,7 +245,7 @@ Vec2 PackingSimulation::pocketPressure(int v, const MeshInstance& mesh, const Sk
   const int k = v - mesh.vertexBegin, nb = mesh.boundaryCount;
   // Not at a reflex vertex: pushing the two sides of a notch outward folds them over it.
   const Vec2 before = position_[mesh.vertexBegin + (k + nb - 1) % nb], after = position_[mesh.vertexBegin + (k + 1) % nb];
-  if (cross(normalized(x - before), normalized(after - x)) < -kPocketReflexTurn) return {};
+  if (forces::reflexSkinVertex(before, x, after)) return {};
   // A drawn notch (between two ears, say) is not a pocket: the element's own skin away from v
   // along the ring counts as a neighbour.
   free2 = std::min(free2, own.nearest2);
@@ -262,7 +260,7 @@ Vec2 PackingSimulation::pocketPressure(int v, const MeshInstance& mesh, const Sk
       if (free <= clearance) return {};
     }
   }
-  return vertexNormal_[v] * (P.pocketPressure * std::min(1.0, (free - clearance) / (reach - clearance)));
+  return forces::pocketPressure(vertexNormal_[v], free, clearance, reach, P.pocketPressure);
 }
 
 void PackingSimulation::restoreAround(int m, Vec2 point, double radius, double strength) {

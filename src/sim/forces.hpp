@@ -3,6 +3,8 @@
 // positions so they can be tested against hand-computed values. Repulsion, edge, overlap and
 // boundary forces are templates over the vector type: RepulsionPak uses them in the plane
 // (Vec2), AnimationPak in (x, y, t) spacetime (Vec3, thesis 5.5).
+#include <algorithm>
+
 #include "pak/geom/vec2.hpp"
 #include "pak/geom/vec3.hpp"
 
@@ -49,6 +51,21 @@ inline Vec2 torsion(Vec2 x, Vec2 centre, Vec2 restDirection, double k) {
   if (turn == 0.0) return {};
   Vec2 uPerp = perp(u) / len;
   return uPerp * (turn > 0.0 ? k : -k);
+}
+
+// Pocket pressure (Pak, not the thesis; docs/repulsionpak.md): a skin vertex whose nearest
+// other skin or wall is `free` away, farther than `clearance`, is pushed along its outward
+// `normal`, fully from `reach` (the repulsion cut-off) on.
+inline Vec2 pocketPressure(Vec2 normal, double free, double clearance, double reach, double k) {
+  if (free <= clearance) return {};
+  return normal * (k * std::min(1.0, (free - clearance) / (reach - clearance)));
+}
+
+// A skin vertex where the ring turns inward by more than asin 0.2 (between `before` and
+// `after`) is reflex: pushing both sides of a notch outward would fold them over it.
+inline bool reflexSkinVertex(Vec2 before, Vec2 x, Vec2 after) {
+  constexpr double kReflexTurn = 0.2;
+  return cross(normalized(x - before), normalized(after - x)) < -kReflexTurn;
 }
 
 }  // namespace pak::forces

@@ -96,6 +96,43 @@ TEST(AnimationPack, GuidedElementFollowsItsTargets) {
   EXPECT_GT(distance(centreAt(0.5), centreAt(0.0)), 120.0);
 }
 
+TEST(AnimationPack, SmallestGuidedGrowthRatioIsOverTheUnguidedMedianAtEachSlice) {
+  AnimatedPacking a;
+  a.slices = 2;
+  auto element = [](bool guided, std::vector<double> growth) {
+    AnimatedElement e;
+    e.guided = guided;
+    e.sliceGrowth = std::move(growth);
+    return e;
+  };
+  EXPECT_EQ(smallestGuidedGrowthRatio(a), 1.0);
+  // Unguided medians: slice 0 of {1.0, 0.6, 0.8} is 0.8, slice 1 of {0.5, 0.9, 0.7} is 0.7.
+  a.elements = {element(false, {1.0, 0.5}), element(false, {0.6, 0.9}), element(false, {0.8, 0.7}),
+                element(true, {0.4, 0.7}), element(true, {0.8, 0.35})};
+  EXPECT_DOUBLE_EQ(smallestGuidedGrowthRatio(a), 0.5);  // 0.4 / 0.8 and 0.35 / 0.7
+  a.elements.pop_back();
+  a.elements.pop_back();
+  EXPECT_EQ(smallestGuidedGrowthRatio(a), 1.0);  // none guided
+}
+
+TEST(AnimationPack, AGuidedElementCrossingACrowdKeepsUpWithItsSize) {
+  // A runner across the disc and back, through eight spinning stars.
+  AnimationScript script = test::spinningStars(8);
+  AnimatedElementSpec guided;
+  guided.id = "runner";
+  guided.svg = "star.svg";
+  guided.targets = {{0.0, {100, 250}, {}, {}}, {0.5, {400, 250}, {}, {}}, {1.0, {100, 250}, {}, {}}};
+  script.elements.push_back(guided);
+  const Library library{test::starElement("star.svg"), test::starElement("star.svg")};
+  AnimationOptions options = test::quickAnimationOptions();
+  options.stop.maxIterations = 600;
+  const AnimatedPacking kept = packAnimation(test::discScene(), library, script, options);
+  options.spacetime.guidedGrowth = 0.0;  // the common growth rule only (thesis)
+  const AnimatedPacking common = packAnimation(test::discScene(), library, script, options);
+  EXPECT_GE(smallestGuidedGrowthRatio(kept), 0.8);
+  EXPECT_LT(smallestGuidedGrowthRatio(common), smallestGuidedGrowthRatio(kept));
+}
+
 TEST(AnimationPack, TwoGuidedElementsSwapPlacesInAPermutationLoop) {
   // Thesis Fig. 5.11d: A runs from left to right, B from right to left; A's t = 1 slice joins
   // B's t = 0 slice and the other way round.

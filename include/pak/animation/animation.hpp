@@ -94,6 +94,11 @@ AnimatedPacking packAnimation(const Scene& scene, const Library& library, const 
 // output (SVG, PNG, verifyPacking, metrics) works on a frame.
 Packing animationFrame(const AnimatedPacking& animation, double t);
 
+// The smallest, over guided elements and slice indices, of a guided slice's growth g over the
+// median g of the unguided elements' slices of the same index: how small guided elements come
+// out. 1 when there is no guided or no unguided element.
+double smallestGuidedGrowthRatio(const AnimatedPacking& animation);
+
 // Frame separation (FrameSeparationOptions, docs/animationpak.md), done by packAnimation:
 // frames at `samples` evenly spaced t are separated, and each element's shrinking is eased
 // over `ramp` of t on either side; animationFrame applies the result at any t.

@@ -13,6 +13,11 @@ struct SpacetimeParameters {
   // element blocked at one moment does not pulse in size around it. 0: off (thesis: slices
   // grow independently).
   double growthSpread = 0.01;
+  // A guided element's slice grows while its g is below this share of the median g of the
+  // unguided elements' slices of the same index, even when it touches or overlaps them: it
+  // pushes through the crowd instead of staying small (the unguided ones give way). 0: off
+  // (thesis: guided slices grow by the common rule).
+  double guidedGrowth = 0.8;
   double timeLength = 1000.0;     // canonical length of the t axis
 };
 
