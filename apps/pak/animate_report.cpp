@@ -9,15 +9,22 @@
 
 namespace pak::cli {
 
-FrameAudit auditFrames(const std::vector<Packing>& frames, const std::vector<double>& times, const Region& container,
-                       int evennessFrames) {
+FrameAudit auditFrames(const std::vector<Packing>& frames, const std::vector<std::optional<PackingCheck>>& checks,
+                       const std::vector<double>& times, const Region& container, int evennessFrames) {
   const double containerArea = area(container);
   const double frameCount = static_cast<double>(frames.size());
   FrameAudit audit;
-  for (const Packing& frame : frames) {
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    const Packing& frame = frames[i];
     const std::vector<Region> outlines = artOutlines(frame);
     for (const Region& r : outlines) audit.meanFill += area(r) / containerArea / frameCount;
-    const PackingCheck check = checkArt(outlines, container, artRings(frame));
+    PackingCheck check;
+    if (checks[i]) {
+      check = *checks[i];
+      checkSelfIntersections(artRings(frame), check);
+    } else {
+      check = checkArt(outlines, container, artRings(frame));
+    }
     audit.framesSelfIntersecting += check.selfIntersecting > 0 ? 1 : 0;
     audit.framesWithOverlap += check.overlappingPairs > 0 ? 1 : 0;
     audit.framesOutside += check.elementsOutside > 0 ? 1 : 0;

@@ -1,5 +1,6 @@
 #pragma once
 // What `pak animate` measures on its rendered frames, and the JSON report (--report) of a run.
+#include <optional>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -20,9 +21,10 @@ struct FrameAudit {
   // Evenness (measureEvenness) of `evennessFrames` frames spread evenly over the animation.
   std::vector<double> evennessTimes, negativeRatio, pocketShare2;
 };
-// `times[i]` is the t of frames[i].
-FrameAudit auditFrames(const std::vector<Packing>& frames, const std::vector<double>& times, const Region& container,
-                       int evennessFrames);
+// `times[i]` is the t of frames[i]; `checks[i]`, when set, is frames[i]'s verifyPacking at
+// kArtAreaTolerance, already made (by separateFrame).
+FrameAudit auditFrames(const std::vector<Packing>& frames, const std::vector<std::optional<PackingCheck>>& checks,
+                       const std::vector<double>& times, const Region& container, int evennessFrames);
 
 struct AnimateTimes {
   double simulation = 0.0, rendering = 0.0, wall = 0.0;  // seconds

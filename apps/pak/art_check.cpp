@@ -5,7 +5,7 @@ namespace pak::cli {
 PackingCheck checkArt(const std::vector<Region>& outlines, const Region& container,
                       const std::vector<std::vector<Ring>>& rings, const std::vector<std::vector<Ring>>& rest) {
   PackingCheckOptions options;
-  options.areaTolerance = 1e-6 * area(container);
+  options.areaTolerance = kArtAreaTolerance * area(container);
   PackingCheck check = verifyPacking(outlines, container, options);
   checkSelfIntersections(rings, check, rest);
   return check;

@@ -7,7 +7,11 @@
 
 namespace pak::cli {
 
-// Overlaps between `outlines` and parts outside `container`, ignoring areas below 1e-6 of it;
+// Overlaps and parts outside below this share of the container's area are not counted.
+inline constexpr double kArtAreaTolerance = 1e-6;
+
+// Overlaps between `outlines` and parts outside `container`, ignoring areas below
+// kArtAreaTolerance of it;
 // and the elements whose placed rings (`rings[i]`, element i's) cross themselves where their
 // rings as drawn (`rest[i]`) do not.
 PackingCheck checkArt(const std::vector<Region>& outlines, const Region& container,

@@ -7,6 +7,7 @@
 
 #include "animate_arguments.hpp"
 #include "animate_report.hpp"
+#include "art_check.hpp"
 #include "command.hpp"
 #include "input_warnings.hpp"
 #include "output_files.hpp"
@@ -110,9 +111,10 @@ int runAnimate(AnimateArguments& args, const CLI::App& command) {
   };
   // packAnimation separated the frames at its samples; a frame between them that still
   // overlaps is separated on its own (`scale`: the smallest scale that gave an element).
-  auto frameAt = [&](double t, double& scale) {
+  // `check`, when given, gets the frame's verifyPacking if the separation made it.
+  auto frameAt = [&](double t, double& scale, std::optional<PackingCheck>* check = nullptr) {
     Packing frame = animationFrame(animation, t);
-    scale = separateFrame(frame, options.frameSeparation);
+    scale = separateFrame(frame, options.frameSeparation, nullptr, check);
     return frame;
   };
   auto drawingAt = [&](double t) {
@@ -127,13 +129,14 @@ int runAnimate(AnimateArguments& args, const CLI::App& command) {
   // Each frame's packing once: it is drawn, and checked below.
   std::vector<Packing> packings;
   std::vector<Drawing> frames;
+  std::vector<std::optional<PackingCheck>> checks(static_cast<std::size_t>(frameCount));
   packings.reserve(frameCount);
   frames.reserve(frameCount);
   int framesSeparated = 0;
   double smallestScale = 1.0;
   for (int i = 0; i < frameCount; ++i) {
     double scale;
-    packings.push_back(frameAt(frameTime(i, frameCount), scale));
+    packings.push_back(frameAt(frameTime(i, frameCount), scale, &checks[i]));
     frames.push_back(packingDrawing(input.layout, packings.back()));
     framesSeparated += scale < 1.0 ? 1 : 0;
     smallestScale = std::min(smallestScale, scale);
@@ -165,7 +168,10 @@ int runAnimate(AnimateArguments& args, const CLI::App& command) {
 
   std::vector<double> times(static_cast<std::size_t>(frameCount));
   for (int i = 0; i < frameCount; ++i) times[i] = frameTime(i, frameCount);
-  FrameAudit audit = auditFrames(packings, times, animation.container, common.report.empty() ? 0 : args.evennessFrames);
+  // The separation's checks are the audit's own when they used its tolerance.
+  if (options.frameSeparation.areaTolerance != kArtAreaTolerance) checks.assign(checks.size(), std::nullopt);
+  FrameAudit audit =
+      auditFrames(packings, checks, times, animation.container, common.report.empty() ? 0 : args.evennessFrames);
   audit.framesSeparated = framesSeparated;
   audit.smallestSeparationScale = smallestScale;
   AnimateTimes seconds;

@@ -292,9 +292,11 @@ SpacetimeSimulation spacetimeSimulation(const AnimationRun& run, const Animation
   sim.finalize(Box{{0.0, 0.0}, {kCanonicalSide, kCanonicalSide}});
   if (resumeFrom) {
     if (resumeFrom->positions.size() != sim.vertexCount() || resumeFrom->growth.size() != sim.growth().size() ||
+        resumeFrom->previousGrowth.size() != sim.growth().size() ||
         resumeFrom->velocities.size() != sim.vertexCount())
       throw InputError("--resume", "the checkpoint was made for other inputs or options (its sizes do not match)");
-    sim.restoreState(resumeFrom->iteration, resumeFrom->positions, resumeFrom->velocities, resumeFrom->growth);
+    sim.restoreState(resumeFrom->iteration, resumeFrom->positions, resumeFrom->velocities, resumeFrom->growth,
+                     resumeFrom->previousGrowth);
   }
   return sim;
 }
@@ -325,8 +327,8 @@ AnimationStop simulateAnimation(SpacetimeSimulation& sim, const AnimationRun& ru
     return p;
   };
   auto state = [&] {
-    return AnimationState{sim.iteration(), sim.positions(), sim.velocities(), sim.growth(), meanGrowth.values(),
-                          meanGrowth.recorded()};
+    return AnimationState{sim.iteration(), sim.positions(), sim.velocities(), sim.growth(), sim.previousGrowth(),
+                          meanGrowth.values(), meanGrowth.recorded()};
   };
   const Deadline deadline(run.started, options.stop.timeLimit);
   const std::optional<AnimationStop> stop = runUntilStopped<AnimationStop>(

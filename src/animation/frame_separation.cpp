@@ -44,13 +44,18 @@ double separationScaleAt(const AnimatedPacking& animation, std::size_t e, double
   return scales[after - 1] + (scales[after] - scales[after - 1]) * std::clamp(w, 0.0, 1.0);
 }
 
-double separateFrame(Packing& frame, const FrameSeparationOptions& options, std::vector<double>* scales) {
+double separateFrame(Packing& frame, const FrameSeparationOptions& options, std::vector<double>* scales,
+                     std::optional<PackingCheck>* check) {
   std::vector<double> scale(frame.elements.size(), 1.0);
-  PackingCheckOptions check;
-  check.areaTolerance = options.areaTolerance * area(frame.container);
+  PackingCheckOptions tolerance;
+  tolerance.areaTolerance = options.areaTolerance * area(frame.container);
+  if (check) check->reset();
   for (int round = 0; round < options.rounds; ++round) {
-    const PackingCheck result = verifyPacking(artOutlines(frame), frame.container, check);
-    if (result.offending.empty()) break;
+    PackingCheck result = verifyPacking(artOutlines(frame), frame.container, tolerance);
+    if (result.offending.empty()) {
+      if (check) *check = std::move(result);
+      break;
+    }
     for (std::size_t e : result.offending) {
       scaleAboutCentre(frame.elements[e], options.step);
       scale[e] *= options.step;

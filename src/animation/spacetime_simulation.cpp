@@ -580,13 +580,15 @@ double SpacetimeSimulation::minGrowth() const {
 }
 
 void SpacetimeSimulation::restoreState(int iteration, std::vector<Vec3> positions, std::vector<Vec3> velocities,
-                                       std::vector<double> growth) {
+                                       std::vector<double> growth, std::vector<double> previousGrowth) {
   assert(finalized_ && "state is restored after finalize");
   assert(positions.size() == position_.size() && velocities.size() == velocity_.size() && growth.size() == growth_.size());
   iteration_ = iteration;
   position_ = std::move(positions);
   velocity_ = std::move(velocities);
   growth_ = std::move(growth);
+  assert(previousGrowth.size() == growth_.size());
+  previousGrowth_ = std::move(previousGrowth);
   for (const ElementRecord& e : elements_)
     for (int s = 0; s < slices_; ++s) sliceTime_[e.sliceBegin + s] = position_[e.vertexBegin + s * e.verticesPerSlice].t;
   computeSliceCentres();

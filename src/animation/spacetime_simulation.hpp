@@ -66,7 +66,11 @@ class SpacetimeSimulation {
   const std::vector<Vec3>& positions() const { return position_; }
   const std::vector<Vec3>& velocities() const { return velocity_; }
   const std::vector<double>& growth() const { return growth_; }  // per slice
-  void restoreState(int iteration, std::vector<Vec3> positions, std::vector<Vec3> velocities, std::vector<double> growth);
+  // Each slice's g before the last step's growth: one that did not grow feels the pocket
+  // pressure in the next step.
+  const std::vector<double>& previousGrowth() const { return previousGrowth_; }
+  void restoreState(int iteration, std::vector<Vec3> positions, std::vector<Vec3> velocities, std::vector<double> growth,
+                    std::vector<double> previousGrowth);
 
   // --- layout and measurements
   int slices() const { return slices_; }

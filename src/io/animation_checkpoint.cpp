@@ -1,5 +1,7 @@
 #include "pak/io/animation_checkpoint.hpp"
 
+#include <cassert>
+
 #include <cmath>
 #include <cstring>
 
@@ -11,7 +13,7 @@ namespace pak {
 
 namespace {
 
-constexpr char kMagic[8] = {'P', 'A', 'K', 'A', 'N', 'I', 'M', '2'};
+constexpr char kMagic[8] = {'P', 'A', 'K', 'A', 'N', 'I', 'M', '3'};
 
 template <class T>
 void put(std::string& out, const T& value) {
@@ -46,6 +48,7 @@ std::uint64_t fingerprintBytes(const std::string& bytes, std::uint64_t seed) {
 }
 
 void writeAnimationCheckpoint(const AnimationState& state, std::uint64_t fingerprint, const std::string& path) {
+  assert(state.previousGrowth.size() == state.growth.size());
   std::string out(kMagic, sizeof kMagic);
   put(out, fingerprint);
   put(out, static_cast<std::int64_t>(state.iteration));
@@ -54,6 +57,7 @@ void writeAnimationCheckpoint(const AnimationState& state, std::uint64_t fingerp
   for (const Vec3& p : state.positions) put(out, p.x), put(out, p.y), put(out, p.t);
   for (const Vec3& v : state.velocities) put(out, v.x), put(out, v.y), put(out, v.t);
   for (double g : state.growth) put(out, g);
+  for (double g : state.previousGrowth) put(out, g);
   put(out, static_cast<std::uint64_t>(state.recentMeanGrowth.size()));
   for (double g : state.recentMeanGrowth) put(out, g);
   put(out, static_cast<std::int64_t>(state.recorded));
@@ -86,6 +90,8 @@ AnimationState readAnimationCheckpoint(const std::string& path, std::uint64_t fi
   for (std::uint64_t k = 0; k < vertices; ++k) state.velocities.push_back(vec());
   state.growth.reserve(slices);
   for (std::uint64_t k = 0; k < slices; ++k) state.growth.push_back(in.get<double>());
+  state.previousGrowth.reserve(slices);
+  for (std::uint64_t k = 0; k < slices; ++k) state.previousGrowth.push_back(in.get<double>());
   const std::uint64_t window = in.get<std::uint64_t>();
   if (window > bytes.size() / 8) throw InputError(path, "checkpoint is damaged");
   for (std::uint64_t k = 0; k < window; ++k) state.recentMeanGrowth.push_back(in.get<double>());

@@ -8,6 +8,7 @@
 // square maps to a canonical 1000 × 1000 frame and the time axis to [0, timeLength] there.
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,7 @@
 #include "pak/animation/animation_script.hpp"
 #include "pak/geom/scene.hpp"
 #include "pak/geom/vec3.hpp"
+#include "pak/geom/verify.hpp"
 #include "pak/sim/element_mesh.hpp"
 #include "pak/sim/packing.hpp"
 
@@ -25,6 +27,7 @@ struct AnimationState {
   int iteration = 0;
   std::vector<Vec3> positions, velocities;
   std::vector<double> growth;
+  std::vector<double> previousGrowth;  // each slice's g before the last step's growth
   // The stopping rule's memory: mean growth of recent iterations (a ring indexed by
   // iteration) and how many iterations it has seen.
   std::vector<double> recentMeanGrowth;
@@ -105,7 +108,10 @@ double smallestGuidedGrowthRatio(const AnimatedPacking& animation);
 void separateAnimation(AnimatedPacking& animation, const FrameSeparationOptions& options, int threads = 1);
 // One frame's separation, the safety net at t between the samples: each offending element
 // shrinks a step per round until the frame is clean. Returns the smallest scale it gave an
-// element (1: the frame was clean, or rounds = 0); `scales`, when given, gets every element's.
-double separateFrame(Packing& frame, const FrameSeparationOptions& options, std::vector<double>* scales = nullptr);
+// element (1: the frame was clean, or rounds = 0); `scales`, when given, gets every element's;
+// `check`, when given, gets the verifyPacking of the frame as returned if the last round made
+// one (it did unless rounds = 0 or the rounds ran out), so a caller need not check it again.
+double separateFrame(Packing& frame, const FrameSeparationOptions& options, std::vector<double>* scales = nullptr,
+                     std::optional<PackingCheck>* check = nullptr);
 
 }  // namespace pak
