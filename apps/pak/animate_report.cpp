@@ -16,7 +16,7 @@ FrameAudit auditFrames(const std::vector<Packing>& frames, const std::vector<std
   FrameAudit audit;
   for (std::size_t i = 0; i < frames.size(); ++i) {
     const Packing& frame = frames[i];
-    const std::vector<Region> outlines = artOutlines(frame);
+    const std::vector<Region> outlines = checkedOutlines(frame);  // the fixed art last, if any
     for (const Region& r : outlines) audit.meanFill += area(r) / containerArea / frameCount;
     PackingCheck check;
     if (checks[i]) {
@@ -106,7 +106,7 @@ nlohmann::json animateReport(const AnimateArguments& args, const AnimatedPacking
   // What each count means, for a reader of the report without the docs at hand.
   report["legend"] = {
       {"skin-fill-mean-over-slices", "area of the elements' skins (art offset by half the gap) over the container's, mean over slices"},
-      {"art-fill-mean-over-frames", "area painted by the art over the container's, mean over the rendered frames"},
+      {"art-fill-mean-over-frames", "area painted by the elements' art and the fixed art over the container's, mean over the rendered frames"},
       {"overlapping-slices-at-end", "slices with a vertex inside another element when the simulation stopped (before the frame separation)"},
       {"unfolded-slices", "slices whose art crossed itself and were relaxed toward their rest shape after the simulation"},
       {"frames-with-overlaps", "rendered frames in which two elements' art overlaps by more than 1e-6 of the container's area"},

@@ -11,6 +11,7 @@ Packing animationFrame(const AnimatedPacking& animation, double t) {
   Packing packing;
   packing.container = animation.container;
   packing.containers = {animation.container};
+  packing.fixedArt = animation.fixedArt;
   packing.canonicalScale = animation.canonicalScale;
   packing.iterations = animation.iterations;
   std::vector<Vec2> vertices, artPoints;

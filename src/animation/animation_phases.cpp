@@ -98,15 +98,28 @@ AnimationRun prepareAnimation(const Scene& scene, const Library& library, const 
   if (script.elements.empty()) throw InputError(script.source, "the animation has no elements");
   if (library.size() != script.elements.size())
     throw InputError(script.source, "one element art per animation element is needed");
-  // Fixed elements are drawn with the frames but are no obstacles yet.
-  AnimationRun run{scene, script, options, slices, preparePacking(scene, library, {})};
+  // Fixed elements are obstacles, as in pak pack: their art grown by half the gap leaves the
+  // container. The gap follows the nominal size, which follows the area they leave free, so a
+  // scene with fixed elements is set up twice: with the art cut out exactly, then with the gap.
+  int total = 0;
+  for (const AnimatedElementSpec& spec : script.elements) total += spec.count;
+  auto nominalAreaIn = [&](double freeArea) {
+    return (options.elementArea > 0.0 ? options.elementArea : 1.0 / total) * freeArea;
+  };
+  PackingSetupOptions setupOptions;
+  if (!scene.fixed.empty()) {
+    setupOptions.obstacleMargin = 0.0;
+    const double freeArea = preparePacking(scene, library, setupOptions).containerArea;
+    setupOptions.obstacleMargin = 0.5 * options.gap * std::sqrt(nominalAreaIn(freeArea));
+  }
+  AnimationRun run{scene, script, options, slices, preparePacking(scene, library, setupOptions)};
   run.started = std::chrono::steady_clock::now();
   indexContainers(run.setup, 10.0);
   const double containerArea = run.setup.containerArea;
+  if (!run.setup.fixedPainted.empty())
+    run.fixedArt = intersect(run.setup.fixedPainted, scene.container, run.setup.clip);
 
-  int total = 0;
-  for (const AnimatedElementSpec& spec : script.elements) total += spec.count;
-  const double nominalArea = (options.elementArea > 0.0 ? options.elementArea : 1.0 / total) * containerArea;
+  const double nominalArea = nominalAreaIn(containerArea);
   const double nominalSize = std::sqrt(nominalArea);
   const double gap = options.gap * nominalSize;
   const double spacing = options.meshSpacing > 0.0 ? options.meshSpacing : nominalSize / 4.0;
@@ -416,6 +429,7 @@ AnimatedPacking collectAnimation(const AnimationRun& run, const AnimationSeeding
   });
   for (int count : unfolded) result.unfoldedSlices += count;
   result.container = run.scene.container;
+  result.fixedArt = run.fixedArt;
   result.canonicalScale = frame.scale;
   result.iterations = sim.iteration();
   result.fill = sim.fill();

@@ -37,6 +37,7 @@ struct AnimationRun {
   std::vector<PreparedElement> meshes;  // one per SVG file, so loops may join copies of different entries
   std::vector<AnimatedType> types;      // one per script element
   std::chrono::steady_clock::time_point started;
+  Region fixedArt;                      // input: what the fixed elements paint inside the container
 };
 
 // Checks the options and the script, sets up the container and prepares the meshes and the

@@ -44,6 +44,12 @@ double separationScaleAt(const AnimatedPacking& animation, std::size_t e, double
   return scales[after - 1] + (scales[after] - scales[after - 1]) * std::clamp(w, 0.0, 1.0);
 }
 
+std::vector<Region> checkedOutlines(const Packing& frame) {
+  std::vector<Region> outlines = artOutlines(frame);
+  if (!frame.fixedArt.empty()) outlines.push_back(frame.fixedArt);
+  return outlines;
+}
+
 double separateFrame(Packing& frame, const FrameSeparationOptions& options, std::vector<double>* scales,
                      std::optional<PackingCheck>* check) {
   std::vector<double> scale(frame.elements.size(), 1.0);
@@ -51,12 +57,13 @@ double separateFrame(Packing& frame, const FrameSeparationOptions& options, std:
   tolerance.areaTolerance = options.areaTolerance * area(frame.container);
   if (check) check->reset();
   for (int round = 0; round < options.rounds; ++round) {
-    PackingCheck result = verifyPacking(artOutlines(frame), frame.container, tolerance);
+    PackingCheck result = verifyPacking(checkedOutlines(frame), frame.container, tolerance);
     if (result.offending.empty()) {
       if (check) *check = std::move(result);
       break;
     }
     for (std::size_t e : result.offending) {
+      if (e >= frame.elements.size()) continue;  // the fixed art: its neighbour shrinks
       scaleAboutCentre(frame.elements[e], options.step);
       scale[e] *= options.step;
     }

@@ -77,6 +77,35 @@ TEST(AnimationPack, ResumingFromACheckpointGivesTheSameResult) {
   for (std::size_t e = 0; e < straight.elements.size(); ++e) ASSERT_EQ(straight.elements[e].slices, resumed.elements[e].slices);
 }
 
+TEST(AnimationPack, FixedElementsAreObstaclesAndInEveryFrame) {
+  // A fixed square in the middle of the disc, where the stars would otherwise go.
+  Scene scene = test::discScene();
+  Shape square;
+  square.subpaths = {Subpath{{{200, 200}, {300, 200}, {300, 300}, {200, 300}}, true}};
+  square.fill = Color{240, 230, 200, 1.0};
+  AnimationOptions options = test::quickAnimationOptions();
+  options.stop.maxIterations = 600;
+  const Library library{test::starElement("star.svg")};
+  const AnimatedPacking open = packAnimation(scene, library, test::spinningStars(6), options);
+  scene.fixed = {square};
+  const AnimatedPacking around = packAnimation(scene, library, test::spinningStars(6), options);
+  ASSERT_GT(area(around.fixedArt), 9999.0);
+  PackingCheckOptions tolerance;
+  tolerance.areaTolerance = 1e-6 * area(scene.container);
+  int crossingTheSquare = 0;
+  for (double t : {0.0, 0.3, 0.6, 0.9}) {
+    const Packing frame = animationFrame(around, t);
+    EXPECT_EQ(area(frame.fixedArt), area(around.fixedArt));
+    const PackingCheck check = verifyPacking(checkedOutlines(frame), frame.container, tolerance);
+    EXPECT_EQ(check.overlappingPairs, 0) << "t = " << t;
+    EXPECT_EQ(check.elementsOutside, 0) << "t = " << t;
+    std::vector<Region> withSquare = artOutlines(animationFrame(open, t));
+    withSquare.push_back(around.fixedArt);
+    crossingTheSquare += verifyPacking(withSquare, frame.container, tolerance).overlappingPairs;
+  }
+  EXPECT_GT(crossingTheSquare, 0) << "without the fixed element, stars cover the square";
+}
+
 TEST(AnimationPack, GuidedElementFollowsItsTargets) {
   AnimationScript script = test::spinningStars(3);
   AnimatedElementSpec guided;

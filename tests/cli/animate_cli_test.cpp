@@ -170,6 +170,20 @@ TEST(CliAnimate, ThePreviewIsTheFrameAtPngAt) {
   EXPECT_LT(sameAs0, total * 95 / 100);
 }
 
+TEST(CliAnimate, TheFixedMoonIsInEveryFrameAndTheStarsKeepClearOfIt) {
+  ScratchFolder dir("cli-animate-fixed");
+  PakRun run = runPak("animate -c examples/animate/stars/disc-moon.svg -a examples/animate/stars/stars.json --slices 6 "
+                      "--frames 8 --width 120 --sheet-frames 3 --svg-keyframes 4 -q --max-iterations 400 --svg-frames -o " +
+                      shellQuoted(dir.file("out")) + " --report " + shellQuoted(dir.file("r.json")));
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  const auto report = nlohmann::json::parse(readWholeFile(dir.file("r.json")));
+  EXPECT_EQ(report["frames-with-overlaps"], 0);  // the moon counts as one more element
+  EXPECT_EQ(report["frames-with-element-outside"], 0);
+  for (const char* name : {"frame-0000.svg", "frame-0005.svg"})
+    EXPECT_NE(readWholeFile((dir.path() / "out" / "svg-frames" / name).string()).find("#f3efd2"), std::string::npos)
+        << name << " draws the moon";
+}
+
 TEST(CliAnimate, BadInputIsOneLineAndExitCodeTwo) {
   ScratchFolder dir("cli-animate-errors");
   const std::string bad = dir.file("bad.json");

@@ -56,6 +56,33 @@ RepulsionOptions quickOptions() {
   return o;
 }
 
+// The bundled scene with three primaries and two secondaries, passes kept short; the
+// secondary pass as the thesis's (the primaries frozen, no press).
+struct TwoPassScene {
+  LoadedScene input = loadScene(kExamples + "/scene.svg");
+  Library primaries = loadLibrary({kExamples + "/elements/cat.svg", kExamples + "/elements/fish.svg",
+                                   kExamples + "/elements/bird.svg"});
+  Library secondaries = loadLibrary({kExamples + "/elements/star.svg", kExamples + "/elements/moon.svg"});
+  RepulsionOptions options = [] {
+    RepulsionOptions o = quickOptions();
+    o.stop.maxIterations = 450;  // per pass
+    o.secondary.pressIterations = 0;
+    return o;
+  }();
+  Packing pack() const { return packRepulsion(input.scene, primaries, secondaries, options); }
+};
+
+// No overlapping pair and nothing outside, the art checked at 1e-5 of the container's area.
+PackingCheck expectCleanArt(const Packing& packing) {
+  PackingCheckOptions check;
+  check.areaTolerance = 1e-5 * area(packing.container);
+  PackingCheck result = verifyPacking(artOutlines(packing), packing.container, check);
+  EXPECT_TRUE(result.ok) << (result.problems.empty() ? "" : result.problems.front());
+  EXPECT_EQ(result.overlappingPairs, 0);
+  EXPECT_EQ(result.elementsOutside, 0);
+  return result;
+}
+
 }  // namespace
 
 TEST(SecondarySeeding, DeepestPocketFirstAndOnlyAboveMinDistance) {
@@ -87,16 +114,10 @@ TEST(SecondarySeeding, DeepestPocketFirstAndOnlyAboveMinDistance) {
 }
 
 TEST(SecondaryPass, FillsPocketsWithoutMovingPrimariesOrOverlapping) {
-  LoadedScene input = loadScene(kExamples + "/scene.svg");
-  Scene& scene = input.scene;
-  Library library = loadLibrary({kExamples + "/elements/cat.svg", kExamples + "/elements/fish.svg",
-                                 kExamples + "/elements/bird.svg"});
-  Library secondary = loadLibrary({kExamples + "/elements/star.svg", kExamples + "/elements/moon.svg"});
-  RepulsionOptions options = quickOptions();
-  options.stop.maxIterations = 450;  // per pass
-  options.secondary.pressIterations = 0;  // the thesis's pass: the primaries stay frozen
-  Packing primaryOnly = packRepulsion(scene, library, options);
-  Packing packing = packRepulsion(scene, library, secondary, options);
+  const TwoPassScene two;
+  const Library& secondary = two.secondaries;
+  Packing primaryOnly = packRepulsion(two.input.scene, two.primaries, two.options);
+  Packing packing = two.pack();
 
   ASSERT_EQ(packing.passes.size(), 2u);
   const PackingPass& first = packing.passes[0];
@@ -128,15 +149,10 @@ TEST(SecondaryPass, FillsPocketsWithoutMovingPrimariesOrOverlapping) {
   EXPECT_EQ(secondaries, second.elements);
 
   // The whole result: no overlaps, everything inside.
-  PackingCheckOptions check;
-  check.areaTolerance = 1e-5 * area(packing.container);
-  PackingCheck result = verifyPacking(artOutlines(packing), packing.container, check);
-  EXPECT_TRUE(result.ok) << (result.problems.empty() ? "" : result.problems.front());
-  EXPECT_EQ(result.overlappingPairs, 0);
-  EXPECT_EQ(result.elementsOutside, 0);
+  expectCleanArt(packing);
 
   // Secondaries are drawn as elements with their own class.
-  std::string svg = toSvgString(packingDrawing(input.layout, packing));
+  std::string svg = toSvgString(packingDrawing(two.input.layout, packing));
   std::size_t marked = 0;
   for (std::size_t at = svg.find("class=\"element secondary\""); at != std::string::npos;
        at = svg.find("class=\"element secondary\"", at + 1))
@@ -145,16 +161,10 @@ TEST(SecondaryPass, FillsPocketsWithoutMovingPrimariesOrOverlapping) {
 }
 
 TEST(SecondaryPass, PressingFreesThePrimariesAndLeavesTheResultClean) {
-  Scene scene = loadScene(kExamples + "/scene.svg").scene;
-  Library library = loadLibrary({kExamples + "/elements/cat.svg", kExamples + "/elements/fish.svg",
-                                 kExamples + "/elements/bird.svg"});
-  Library secondary = loadLibrary({kExamples + "/elements/star.svg", kExamples + "/elements/moon.svg"});
-  RepulsionOptions options = quickOptions();
-  options.stop.maxIterations = 450;  // per pass
-  options.secondary.pressIterations = 0;
-  const Packing frozen = packRepulsion(scene, library, secondary, options);
-  options.secondary.pressIterations = 200;
-  const Packing pressed = packRepulsion(scene, library, secondary, options);
+  TwoPassScene two;
+  const Packing frozen = two.pack();
+  two.options.secondary.pressIterations = 200;
+  const Packing pressed = two.pack();
 
   // The same pockets get the same secondaries; the press and the clean-up come after.
   ASSERT_EQ(pressed.passes.size(), 2u);
@@ -166,12 +176,8 @@ TEST(SecondaryPass, PressingFreesThePrimariesAndLeavesTheResultClean) {
   for (std::size_t i = 0; i < pressed.elements.size(); ++i)
     if (!pressed.elements[i].secondary && artPoints(pressed.elements[i]) != artPoints(frozen.elements[i])) ++moved;
   EXPECT_GT(moved, 0);
-  PackingCheckOptions check;
-  check.areaTolerance = 1e-5 * area(pressed.container);
-  const PackingCheck result = verifyPacking(artOutlines(pressed), pressed.container, check);
-  EXPECT_TRUE(result.ok) << (result.problems.empty() ? "" : result.problems.front());
-  EXPECT_EQ(result.overlappingPairs, 0);
-  EXPECT_EQ(result.elementsOutside, 0);
+  PackingCheck result = expectCleanArt(pressed);
+  checkSelfIntersections(artRings(pressed), result);
   EXPECT_EQ(result.selfIntersecting, 0);
 }
 

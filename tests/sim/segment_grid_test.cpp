@@ -8,15 +8,24 @@
 
 using namespace pak;
 
-TEST(SegmentGrid, FindsExactlyTheSegmentsInTheWindow) {
-  std::vector<Vec2> p = {{5, 5}, {8, 5}, {55, 55}, {58, 58}, {95, 5}, {95, 15}};
-  std::vector<int> ends = {0, 1, 2, 3, 4, 5};
+namespace {
+// A grid of 10-unit cells over [0, 100]², holding the segments ends[2s] → ends[2s + 1] of p.
+SegmentGrid gridOver(const std::vector<Vec2>& p, const std::vector<int>& ends) {
+  const std::size_t segments = ends.size() / 2;
   SegmentGrid grid;
   Box area;
   area.add(Vec2{0, 0});
   area.add(Vec2{100, 100});
-  grid.configure(area, 10.0, 3);
-  grid.rebuild(p.data(), ends.data(), 3);
+  grid.configure(area, 10.0, segments);
+  grid.rebuild(p.data(), ends.data(), segments);
+  return grid;
+}
+}  // namespace
+
+TEST(SegmentGrid, FindsExactlyTheSegmentsInTheWindow) {
+  std::vector<Vec2> p = {{5, 5}, {8, 5}, {55, 55}, {58, 58}, {95, 5}, {95, 15}};
+  std::vector<int> ends = {0, 1, 2, 3, 4, 5};
+  SegmentGrid grid = gridOver(p, ends);
   std::set<int> near;
   grid.forEachNear({12, 12}, 1, [&](int s) { near.insert(s); });
   EXPECT_EQ(near, std::set<int>({0}));
@@ -38,12 +47,7 @@ TEST(SegmentGrid, FindsExactlyTheSegmentsInTheWindow) {
 TEST(SegmentGrid, RebuildFollowsMovedSegments) {
   std::vector<Vec2> p = {{5, 5}, {6, 6}};
   std::vector<int> ends = {0, 1};
-  SegmentGrid grid;
-  Box area;
-  area.add(Vec2{0, 0});
-  area.add(Vec2{100, 100});
-  grid.configure(area, 10.0, 1);
-  grid.rebuild(p.data(), ends.data(), 1);
+  SegmentGrid grid = gridOver(p, ends);
   p = {{75, 75}, {76, 76}};
   grid.rebuild(p.data(), ends.data(), 1);
   int hits = 0;
@@ -57,12 +61,7 @@ TEST(SegmentGrid, VisitsASegmentSpanningSeveralCellsOnceInScanOrder) {
   // Segment 0 spans 3 × 3 cells; segment 1 lies in one cell below-right of its first one.
   std::vector<Vec2> p = {{5, 5}, {25, 25}, {35, 35}, {36, 36}};
   std::vector<int> ends = {0, 1, 2, 3};
-  SegmentGrid grid;
-  Box area;
-  area.add(Vec2{0, 0});
-  area.add(Vec2{100, 100});
-  grid.configure(area, 10.0, 2);
-  grid.rebuild(p.data(), ends.data(), 2);
+  SegmentGrid grid = gridOver(p, ends);
   for (Vec2 at : {Vec2{15, 15}, Vec2{25, 25}, Vec2{5, 25}, Vec2{35, 35}}) {
     std::vector<int> seen;
     grid.forEachNear(at, 1, [&](int s) { seen.push_back(s); });

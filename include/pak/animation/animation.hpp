@@ -71,6 +71,7 @@ struct AnimatedElement {
 struct AnimatedPacking {
   std::vector<AnimatedElement> elements;
   Region container;              // input coordinates
+  Region fixedArt;               // input: the fixed elements' art inside the container (obstacles)
   double canonicalScale = 1.0;   // canonical units per input unit
   int iterations = 0;
   AnimationStop stopReason = AnimationStop::IterationCap;
@@ -106,6 +107,9 @@ double smallestGuidedGrowthRatio(const AnimatedPacking& animation);
 // frames at `samples` evenly spaced t are separated, and each element's shrinking is eased
 // over `ramp` of t on either side; animationFrame applies the result at any t.
 void separateAnimation(AnimatedPacking& animation, const FrameSeparationOptions& options, int threads = 1);
+// What a frame's check sees: the elements' art outlines, then the fixed art (an obstacle) as
+// one more outline when there is any.
+std::vector<Region> checkedOutlines(const Packing& frame);
 // One frame's separation, the safety net at t between the samples: each offending element
 // shrinks a step per round until the frame is clean. Returns the smallest scale it gave an
 // element (1: the frame was clean, or rounds = 0); `scales`, when given, gets every element's;
