@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# AnimationPak quality benchmark (issue 15): both examples, seeds 1–5, at 100 and at 500
-# frames, 2 threads. Each seed is simulated once: the 500-frame run resumes from the 100-frame
+# AnimationPak quality benchmark (issue 15): both examples and the crowd (stars with a guided
+# comet crossing them), seeds 1–5, at 100 and at 500 frames, 2 threads. Each seed is simulated once: the 500-frame run resumes from the 100-frame
 # run's last checkpoint (bit-identical, docs/animationpak.md), so only the frames differ.
 # Per run: frames with an overlap, with an element outside and with a self-crossing outline,
 # slices unfolded, frames separated, the evenness of 10 frames (median and worst P2, median
@@ -11,12 +11,13 @@
 set -euo pipefail
 source "$(dirname "$0")/common.sh"
 seeds=${ANIMATE_SEEDS:-1 2 3 4 5}
-names=${ANIMATE_SCENES:-stars chase}
+names=${ANIMATE_SCENES:-stars chase crowd}
 csv=bench/animate-quality-results.csv
 header="date,commit,scene,seed,frames,iterations,stop,frames_with_overlaps,frames_outside,frames_self_crossing,unfolded_slices,frames_separated,neg_median,P2_median,P2_worst,guided_growth_ratio,sim_s"
 declare -A scenes
 scenes[stars]="-c examples/animate/stars/disc.svg -a examples/animate/stars/stars.json"
 scenes[chase]="-c examples/animate/chase/annulus.svg -a examples/animate/chase/chase.json"
+scenes[crowd]="-c examples/animate/stars/disc.svg -a examples/animate/stars/crowd.json"
 
 row() {  # row REPORT SCENE SEED FRAMES
   python3 - "$@" <<'PY'

@@ -400,31 +400,52 @@ AnimatedPacking collectAnimation(const AnimationRun& run, const AnimationSeeding
   }
   // A slice whose art folds over itself (a limb pressed across the body; the spacetime forces
   // do not see the art) is relaxed toward its animated rest shape, as RepulsionPak's clean-up
-  // does; the frames on either side follow it smoothly. Elements are independent: in parallel.
+  // does; then a pair of slices whose interpolation folds between them (seen at eighths of the
+  // way) is relaxed together, so no rendered frame folds. Elements are independent: in parallel.
+  constexpr int kBetween = 8;
   std::vector<int> unfolded(result.elements.size(), 0);
   pool.parallelFor(result.elements.size(), 1, [&](std::size_t elementBegin, std::size_t elementEnd) {
-    std::vector<Vec2> crossings, artPoints;
+    std::vector<Vec2> crossings, artPoints, between;
     Ring ring;
     for (std::size_t e = elementBegin; e < elementEnd; ++e) {
       const AnimatedInstance& instance = seeding.instances[e];
       const PreparedElement& element = run.meshes[run.types[instance.type].mesh];
       AnimatedElement& out = result.elements[e];
-      for (int s = 0; s < slices; ++s) {
-        std::vector<Vec2>& vertices = out.slices[s];
-        const int n = static_cast<int>(vertices.size());
-        auto firstFold = [&]() -> std::optional<Vec2> {
-          crossings.clear();
-          appendArtFolds(element, vertices.data(), crossings, artPoints, ring);
-          if (crossings.empty()) return std::nullopt;
-          return crossings.front();
+      const int n = static_cast<int>(out.slices[0].size());
+      auto foldOf = [&](const std::vector<Vec2>& vertices) -> std::optional<Vec2> {
+        crossings.clear();
+        appendArtFolds(element, vertices.data(), crossings, artPoints, ring);
+        if (crossings.empty()) return std::nullopt;
+        return crossings.front();
+      };
+      auto restore = [&](int s, double keep, Vec2 at, double radius) {
+        blendTowardRest(out.slices[s].data(), instance.reference.data() + static_cast<std::ptrdiff_t>(s) * n, n,
+                        out.sliceGrowth[s], keep, at, radius, [](int) {});
+      };
+      const double cell = run.options.simulation.cellSize;
+      for (int s = 0; s < slices; ++s)
+        if (relaxFold(cell, [&] { return foldOf(out.slices[s]); },
+                      [&](double keep, Vec2 at, double radius) { restore(s, keep, at, radius); }))
+          ++unfolded[e];
+      for (int s = 0; s + 1 < slices; ++s) {
+        const std::vector<Vec2>&a = out.slices[s], &b = out.slices[s + 1];
+        auto foldBetween = [&]() -> std::optional<Vec2> {
+          between.resize(a.size());
+          for (int k = 1; k < kBetween; ++k) {
+            const double w = static_cast<double>(k) / kBetween;
+            for (std::size_t v = 0; v < a.size(); ++v) between[v] = a[v] + (b[v] - a[v]) * w;
+            if (const std::optional<Vec2> at = foldOf(between)) return at;
+          }
+          return std::nullopt;
         };
-        auto restore = [&](double keep, Vec2 at, double radius) {
-          blendTowardRest(vertices.data(), instance.reference.data() + static_cast<std::ptrdiff_t>(s) * n, n,
-                          out.sliceGrowth[s], keep, at, radius, [](int) {});
+        auto restoreBoth = [&](double keep, Vec2 at, double radius) {
+          restore(s, keep, at, radius);
+          restore(s + 1, keep, at, radius);
         };
-        unfolded[e] += relaxFold(run.options.simulation.cellSize, firstFold, restore) ? 1 : 0;
-        for (Vec2& p : vertices) p = frame.toInput(p);
+        if (relaxFold(cell, foldBetween, restoreBoth)) unfolded[e] += 2;
       }
+      for (std::vector<Vec2>& vertices : out.slices)
+        for (Vec2& p : vertices) p = frame.toInput(p);
     }
   });
   for (int count : unfolded) result.unfoldedSlices += count;

@@ -77,7 +77,7 @@ struct AnimatedPacking {
   AnimationStop stopReason = AnimationStop::IterationCap;
   double fill = 0.0;             // mean skin fill over slices at the end
   int overlappingSlices = 0;     // slices overlapping another element at the end
-  int unfoldedSlices = 0;        // slices whose art folded over itself, relaxed toward their rest shape
+  int unfoldedSlices = 0;        // slices relaxed toward their rest shape: their art, or a frame between two, folded
   std::size_t vertices = 0, springs = 0, envelopeTriangles = 0;
   int slices = 0;
   double seconds = 0.0;          // set up and simulation
