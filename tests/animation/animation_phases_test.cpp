@@ -29,18 +29,25 @@ TEST(AnimationPhases, SeedingPlacesEveryCopyShrunkAndApart) {
                 2.0 * run.types[0].radius * seeding.growth);
 }
 
-TEST(AnimationPhases, InOrderTheyArePackAnimation) {
+// `count` spinning stars in the disc, taken through the phases up to the end of the simulation.
+struct SimulatedStars {
+  explicit SimulatedStars(int count) : script(test::spinningStars(count)) {}
   const Scene scene = test::discScene();
   const Library library{test::starElement("star.svg")};
-  const AnimationScript script = test::spinningStars(5);
+  const AnimationScript script;
   const AnimationOptions options = test::quickAnimationOptions();
   const AnimationRun run = prepareAnimation(scene, library, script, options);
   const AnimationSeeding seeding = seedAnimation(run);
-  ThreadPool pool(options.run.threads);
+  ThreadPool pool{options.run.threads};
   SpacetimeSimulation sim = spacetimeSimulation(run, seeding, pool, nullptr);
+  const AnimationStop stop = simulateAnimation(sim, run, {}, nullptr);
+};
+
+TEST(AnimationPhases, InOrderTheyArePackAnimation) {
+  SimulatedStars stars(5);
+  auto& [scene, library, script, options, run, seeding, pool, sim, stop] = stars;
   EXPECT_EQ(sim.elementCount(), 5);
   EXPECT_EQ(sim.slices(), script.slices);
-  const AnimationStop stop = simulateAnimation(sim, run, {}, nullptr);
   const AnimatedPacking byPhases = collectAnimation(run, seeding, sim, stop, pool);
   const AnimatedPacking packed = packAnimation(scene, library, script, options);
   EXPECT_EQ(byPhases.iterations, packed.iterations);
@@ -50,15 +57,8 @@ TEST(AnimationPhases, InOrderTheyArePackAnimation) {
 }
 
 TEST(AnimationPhases, CollectingUnfoldsASliceFoldedOverItself) {
-  const Scene scene = test::discScene();
-  const Library library{test::starElement("star.svg")};
-  const AnimationScript script = test::spinningStars(3);
-  const AnimationOptions options = test::quickAnimationOptions();
-  const AnimationRun run = prepareAnimation(scene, library, script, options);
-  const AnimationSeeding seeding = seedAnimation(run);
-  ThreadPool pool(options.run.threads);
-  SpacetimeSimulation sim = spacetimeSimulation(run, seeding, pool, nullptr);
-  const AnimationStop stop = simulateAnimation(sim, run, {}, nullptr);
+  SimulatedStars stars(3);
+  auto& [scene, library, script, options, run, seeding, pool, sim, stop] = stars;
   const PreparedElement& element = run.meshes[run.types[0].mesh];
   std::vector<Vec2> folds, artPoints, slice;
   Ring ring;
