@@ -179,6 +179,8 @@ void SpacetimeSimulation::finalize(const Box& area) {
   cellTriangles_.assign(nt, 0);
   cellGroupStart_.assign(cells + 1, 0);
   groups_.assign(nt, {});
+  vertexCell_.assign(nv, 0);
+  candidatesOf_.assign(cells, {});
   computeReferencePoints(0, nv);
   computeSliceCentres();
   buildGrid();
@@ -201,6 +203,30 @@ void SpacetimeSimulation::computeReferencePoints(std::size_t begin, std::size_t 
     referencePoint_[v] = {p.x, p.y, restTime_[s]};
   }
 }
+
+namespace {
+
+// The cells around a query point: the 3 × 3 × 3 block nearest first (so close hits are found
+// early and prune the rest), then the outer shell of the 5 × 5 × 5 block.
+struct BlockOffsets {
+  std::array<std::array<int, 3>, 27> inner;
+  std::array<std::array<int, 3>, 98> shell;
+  BlockOffsets() {
+    int i = 0, s = 0;
+    for (int dt = -2; dt <= 2; ++dt)
+      for (int dy = -2; dy <= 2; ++dy)
+        for (int dx = -2; dx <= 2; ++dx) {
+          if (std::abs(dx) <= 1 && std::abs(dy) <= 1 && std::abs(dt) <= 1) inner[i++] = {dx, dy, dt};
+          else shell[s++] = {dx, dy, dt};
+        }
+    std::stable_sort(inner.begin(), inner.end(), [](const auto& a, const auto& b) {
+      return a[0] * a[0] + a[1] * a[1] + a[2] * a[2] < b[0] * b[0] + b[1] * b[1] + b[2] * b[2];
+    });
+  }
+};
+const BlockOffsets kBlock;
+
+}  // namespace
 
 void SpacetimeSimulation::buildGrid() {
   const std::size_t nt = envelope_.size();
@@ -244,31 +270,82 @@ void SpacetimeSimulation::buildGrid() {
     }
   }
   cellGroupStart_[cells] = static_cast<int>(groupCount);
+  buildCandidates();
 }
 
-namespace {
-
-// The cells around a query point: the 3 × 3 × 3 block nearest first (so close hits are found
-// early and prune the rest), then the outer shell of the 5 × 5 × 5 block.
-struct BlockOffsets {
-  std::array<std::array<int, 3>, 27> inner;
-  std::array<std::array<int, 3>, 98> shell;
-  BlockOffsets() {
-    int i = 0, s = 0;
-    for (int dt = -2; dt <= 2; ++dt)
-      for (int dy = -2; dy <= 2; ++dy)
-        for (int dx = -2; dx <= 2; ++dx) {
-          if (std::abs(dx) <= 1 && std::abs(dy) <= 1 && std::abs(dt) <= 1) inner[i++] = {dx, dy, dt};
-          else shell[s++] = {dx, dy, dt};
-        }
-    std::stable_sort(inner.begin(), inner.end(), [](const auto& a, const auto& b) {
-      return a[0] * a[0] + a[1] * a[1] + a[2] * a[2] < b[0] * b[0] + b[1] * b[1] + b[2] * b[2];
-    });
+// The candidate groups of every cell that holds a skin vertex (see CellCandidates). A group is
+// left out only when no point of the cell can use it, so gatherHits finds exactly what a
+// search of the 5 × 5 × 5 block from each vertex would, in the same order.
+void SpacetimeSimulation::buildCandidates() {
+  const std::size_t nv = position_.size();
+  pool_.parallelFor(nv, 4096, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t v = begin; v < end; ++v)
+      if (isBoundary_[v]) {
+        const auto [x, y, t] = cellOf(position_[v]);
+        vertexCell_[v] = (t * ny_ + y) * nx_ + x;
+      }
+  });
+  for (CellCandidates& c : candidatesOf_) c.end = -1;  // not queried
+  queriedCells_.clear();
+  for (std::size_t v = 0; v < nv; ++v)
+    if (isBoundary_[v] && candidatesOf_[vertexCell_[v]].end < 0) {
+      candidatesOf_[vertexCell_[v]].end = 0;
+      queriedCells_.push_back(vertexCell_[v]);
+    }
+  std::sort(queriedCells_.begin(), queriedCells_.end());
+  // Room for every group of the block, then each cell fills its own range in parallel.
+  auto blockCell = [&](int cell, const std::array<int, 3>& o) {
+    const int x = cell % nx_ + o[0], y = cell / nx_ % ny_ + o[1], t = cell / (nx_ * ny_) + o[2];
+    if (x < 0 || x >= nx_ || y < 0 || y >= ny_ || t < 0 || t >= nt_) return -1;
+    return (t * ny_ + y) * nx_ + x;
+  };
+  int room = 0;
+  for (int cell : queriedCells_) {
+    candidatesOf_[cell].begin = room;
+    for (const auto& o : kBlock.inner)
+      if (const int c = blockCell(cell, o); c >= 0) room += cellGroupStart_[c + 1] - cellGroupStart_[c];
+    for (const auto& o : kBlock.shell)
+      if (const int c = blockCell(cell, o); c >= 0) room += cellGroupStart_[c + 1] - cellGroupStart_[c];
   }
-};
-const BlockOffsets kBlock;
+  // Grows only while the packing spreads over more cells; a few steps in, it stays put.
+  if (candidates_.size() < static_cast<std::size_t>(room)) candidates_.resize(static_cast<std::size_t>(room) * 5 / 4);
+  const double cell = parameters_.cellSize, reach = cell, shellReach = 2.5 * cell;
+  constexpr double kSlack = 1e-9;  // canonical units: rounding never drops a group a vertex uses
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  pool_.parallelFor(queriedCells_.size(), 16, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t q = begin; q < end; ++q) {
+      const int index = queriedCells_[q];
+      const int ix = index % nx_, iy = index / nx_ % ny_, it = index / (nx_ * ny_);
+      // The cell's box; a border cell also holds the points clamped into it.
+      Vec3 lo{gridOrigin_.x + ix * cell, gridOrigin_.y + iy * cell, gridOrigin_.t + it * cell};
+      Vec3 hi{lo.x + cell, lo.y + cell, lo.t + cell};
+      if (ix == 0) lo.x = -kInf;
+      if (iy == 0) lo.y = -kInf;
+      if (it == 0) lo.t = -kInf;
+      if (ix == nx_ - 1) hi.x = kInf;
+      if (iy == ny_ - 1) hi.y = kInf;
+      if (it == nt_ - 1) hi.t = kInf;
+      auto boxDistance = [&](Vec3 p) {
+        const double dx = std::max({lo.x - p.x, 0.0, p.x - hi.x}), dy = std::max({lo.y - p.y, 0.0, p.y - hi.y}),
+                     dt = std::max({lo.t - p.t, 0.0, p.t - hi.t});
+        return std::sqrt(dx * dx + dy * dy + dt * dt);
+      };
+      CellCandidates& out = candidatesOf_[index];
+      int k = out.begin;
+      for (const auto& o : kBlock.inner)
+        if (const int c = blockCell(index, o); c >= 0)
+          for (int g = cellGroupStart_[c]; g < cellGroupStart_[c + 1]; ++g)
+            if (boxDistance(groups_[g].centre) - groups_[g].radius <= reach + kSlack) candidates_[k++] = g;
+      out.innerEnd = k;
+      for (const auto& o : kBlock.shell)
+        if (const int c = blockCell(index, o); c >= 0)
+          for (int g = cellGroupStart_[c]; g < cellGroupStart_[c + 1]; ++g)
+            if (boxDistance(groups_[g].centre) < shellReach + kSlack) candidates_[k++] = g;
+      out.end = k;
+    }
+  });
+}
 
-}  // namespace
 
 // The nearest point of every other element near vertex v (5.5.1): exact closest points on
 // envelope triangles in the 3 × 3 × 3 block of cells around it, and for elements seen only in
@@ -278,50 +355,37 @@ void SpacetimeSimulation::gatherHits(int v, Hits& hits) const {
   const Vec3 x = position_[v];
   const int self = sliceElement_[sliceOf_[v]];
   const double reach = parameters_.cellSize, shellReach = 2.5 * parameters_.cellSize;
-  const auto [cx, cy, ct] = cellOf(x);
-  auto cellIndex = [&](const std::array<int, 3>& o) {
-    const int xx = cx + o[0], y = cy + o[1], t = ct + o[2];
-    if (xx < 0 || xx >= nx_ || y < 0 || y >= ny_ || t < 0 || t >= nt_) return -1;
-    return (t * ny_ + y) * nx_ + xx;
-  };
-  for (const auto& offset : kBlock.inner) {
-    const int c = cellIndex(offset);
-    if (c < 0) continue;
-    for (int g = cellGroupStart_[c]; g < cellGroupStart_[c + 1]; ++g) {
-      const EnvelopeGroup& group = groups_[g];
-      if (group.element == self) continue;
-      const double toCentre = distance(x, group.centre);
-      const double bound = toCentre - group.radius;  // nothing in the group is nearer
-      if (bound > reach) continue;
-      const int known = hits.find(group.element);
-      double best = known >= 0 && hits[known].exact ? hits[known].d2 : reach * reach;
-      if (bound > 0.0 && bound * bound >= best) continue;
-      for (int k = group.begin; k < group.end; ++k) {
-        const int tri = cellTriangles_[k];
-        const double triBound = distance(x, envelopeCentroid_[tri]) - envelopeRadius_[tri];
-        if (triBound > 0.0 && triBound * triBound >= best) continue;
-        const auto& corners = envelope_[tri];
-        const Vec3 q = closestPointOnTriangle(x, position_[corners[0]], position_[corners[1]], position_[corners[2]]);
-        const double d2 = lengthSquared(q - x);
-        if (d2 < best) {
-          best = d2;
-          hits.offer({group.element, d2, q, true});
-        }
+  const CellCandidates& around = candidatesOf_[vertexCell_[v]];
+  for (int k = around.begin; k < around.innerEnd; ++k) {
+    const EnvelopeGroup& group = groups_[candidates_[k]];
+    if (group.element == self) continue;
+    const double toCentre = distance(x, group.centre);
+    const double bound = toCentre - group.radius;  // nothing in the group is nearer
+    if (bound > reach) continue;
+    const int known = hits.find(group.element);
+    double best = known >= 0 && hits[known].exact ? hits[known].d2 : reach * reach;
+    if (bound > 0.0 && bound * bound >= best) continue;
+    for (int j = group.begin; j < group.end; ++j) {
+      const int tri = cellTriangles_[j];
+      const double triBound = distance(x, envelopeCentroid_[tri]) - envelopeRadius_[tri];
+      if (triBound > 0.0 && triBound * triBound >= best) continue;
+      const auto& corners = envelope_[tri];
+      const Vec3 q = closestPointOnTriangle(x, position_[corners[0]], position_[corners[1]], position_[corners[2]]);
+      const double d2 = lengthSquared(q - x);
+      if (d2 < best) {
+        best = d2;
+        hits.offer({group.element, d2, q, true});
       }
     }
   }
-  for (const auto& offset : kBlock.shell) {
-    const int c = cellIndex(offset);
-    if (c < 0) continue;
-    for (int g = cellGroupStart_[c]; g < cellGroupStart_[c + 1]; ++g) {
-      const EnvelopeGroup& group = groups_[g];
-      if (group.element == self) continue;
-      const double d2 = lengthSquared(x - group.centre);
-      if (d2 >= shellReach * shellReach) continue;
-      const int known = hits.find(group.element);
-      if (known >= 0 && hits[known].exact) continue;
-      hits.offer({group.element, d2, group.centre, false});
-    }
+  for (int k = around.innerEnd; k < around.end; ++k) {
+    const EnvelopeGroup& group = groups_[candidates_[k]];
+    if (group.element == self) continue;
+    const double d2 = lengthSquared(x - group.centre);
+    if (d2 >= shellReach * shellReach) continue;
+    const int known = hits.find(group.element);
+    if (known >= 0 && hits[known].exact) continue;
+    hits.offer({group.element, d2, group.centre, false});
   }
 }
 

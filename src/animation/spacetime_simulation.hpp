@@ -112,6 +112,7 @@ class SpacetimeSimulation {
 
   void computeReferencePoints(std::size_t begin, std::size_t end);
   void buildGrid();
+  void buildCandidates();
   void gatherHits(int v, Hits& hits) const;
   bool insideElementAt(int element, Vec3 x) const;
   void computeForces(std::size_t begin, std::size_t end);
@@ -166,6 +167,15 @@ class SpacetimeSimulation {
   std::vector<double> envelopeRadius_;
   std::vector<int> envelopeCell_, cellCount_, cellTriangles_, cellGroupStart_;
   std::vector<EnvelopeGroup> groups_;
+  // Per cell that holds a skin vertex, the groups its vertices may see, in the order
+  // gatherHits visits them (nearest cells first, then the outer shell): those of the 3 × 3 × 3
+  // block in [begin, innerEnd), those of the shell in [innerEnd, end). Groups no point of the
+  // cell can reach are left out. Built once per step, shared by the cell's vertices.
+  struct CellCandidates { int begin = 0, innerEnd = 0, end = 0; };
+  std::vector<int> vertexCell_;            // per skin vertex
+  std::vector<int> queriedCells_;          // cells holding a skin vertex, in cell order
+  std::vector<CellCandidates> candidatesOf_;  // per cell
+  std::vector<int> candidates_;            // group indices
   Vec3 gridOrigin_;
   int nx_ = 0, ny_ = 0, nt_ = 0;
   // Loops.
