@@ -65,7 +65,7 @@ for entry in "${scenes[@]}"; do
 done
 
 # The issue-5 features and FLOWPAK: each script appends its own CSV (bench/*-results.csv) and prints it.
-for extra in quality.sh secondary.sh tiling.sh shape_matching.sh containers-orientation.sh flow.sh animate.sh animate-quality.sh; do
+for extra in quality.sh secondary.sh tiling.sh shape_matching.sh containers-orientation.sh flow.sh animate.sh animate-quality.sh animate-time-springs.sh; do
   echo
   echo "== bench/$extra"
   ./bench/"$extra" "$build"

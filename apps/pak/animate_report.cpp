@@ -94,6 +94,7 @@ nlohmann::json animateReport(const AnimateArguments& args, const AnimatedPacking
                                       {"P2", audit.pocketShare2}};
   }
   report["guided-growth-ratio"] = smallestGuidedGrowthRatio(animation);
+  report["mean-centroid-acceleration"] = meanCentroidAcceleration(animation, frameCount);
   report["seconds"] = {{"setup", animation.setupSeconds},
                        {"simulation", animation.seconds - animation.setupSeconds - animation.separationSeconds},
                        {"frame-separation", animation.separationSeconds},
@@ -117,6 +118,7 @@ nlohmann::json animateReport(const AnimateArguments& args, const AnimatedPacking
       {"frames-separated", "rendered frames in which the frame separation shrank an element"},
       {"smallest-separation-scale", "the smallest scale the frame separation gave an element in a rendered frame (1: none shrank)"},
       {"evenness-over-frames", "negative space and pocket share P2 (docs/metrics.md) of --evenness-frames frames spread over the animation: median, worst, and each"},
+      {"mean-centroid-acceleration", "how frantically the unguided elements move (thesis Fig. 5.21): the mean over them and the rendered frames of the length of the centroid's second difference from frame to frame, canonical units per frame squared"},
       {"guided-growth-ratio", "the smallest, over guided elements and slices, of a guided slice's growth over the median growth of the unguided elements' slices at that t (1 when none is guided)"}};
   return report;
 }

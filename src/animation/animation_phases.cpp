@@ -306,10 +306,11 @@ SpacetimeSimulation spacetimeSimulation(const AnimationRun& run, const Animation
   if (resumeFrom) {
     if (resumeFrom->positions.size() != sim.vertexCount() || resumeFrom->growth.size() != sim.growth().size() ||
         resumeFrom->previousGrowth.size() != sim.growth().size() ||
+        resumeFrom->neighbourOrigin.size() != sim.vertexCount() ||
         resumeFrom->velocities.size() != sim.vertexCount())
       throw InputError("--resume", "the checkpoint was made for other inputs or options (its sizes do not match)");
     sim.restoreState(resumeFrom->iteration, resumeFrom->positions, resumeFrom->velocities, resumeFrom->growth,
-                     resumeFrom->previousGrowth);
+                     resumeFrom->previousGrowth, resumeFrom->neighbourOrigin);
   }
   return sim;
 }
@@ -341,6 +342,7 @@ AnimationStop simulateAnimation(SpacetimeSimulation& sim, const AnimationRun& ru
   };
   auto state = [&] {
     return AnimationState{sim.iteration(), sim.positions(), sim.velocities(), sim.growth(), sim.previousGrowth(),
+                          sim.neighbourOrigin(),
                           meanGrowth.values(), meanGrowth.recorded()};
   };
   const Deadline deadline(run.started, options.stop.timeLimit);

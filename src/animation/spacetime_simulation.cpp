@@ -12,6 +12,10 @@ namespace pak {
 namespace {
 constexpr double kNoTarget = std::numeric_limits<double>::quiet_NaN();
 constexpr double kFar = std::numeric_limits<double>::infinity();
+// How far (canonical units) a neighbour may come closer than the nearest one was when the
+// neighbour lists were built, before they are built again (SpacetimeNeighbours): at the
+// velocity cap, every 10 steps or so.
+constexpr double kNeighbourMargin = 4.0;
 }  // namespace
 
 SpacetimeSimulation::SpacetimeSimulation(const RegionIndex& container, double containerArea, int slices,
@@ -164,33 +168,22 @@ void SpacetimeSimulation::finalize(const Box& area) {
   previousGrowth_.assign(ns, 0.0);
   unguidedGrowth_.assign(elements_.size(), 0.0);
 
-  // Collision grid over the container's box (grown by a cell) × [0, timeLength].
-  const double cell = parameters_.cellSize;
-  gridOrigin_ = {area.min.x - cell, area.min.y - cell, -cell};
-  nx_ = std::max(1, static_cast<int>(std::ceil((area.width() + 2 * cell) / cell)));
-  ny_ = std::max(1, static_cast<int>(std::ceil((area.height() + 2 * cell) / cell)));
-  nt_ = std::max(1, static_cast<int>(std::ceil((spacetime_.timeLength + 2 * cell) / cell)));
-  const std::size_t cells = static_cast<std::size_t>(nx_) * ny_ * nt_;
-  const std::size_t nt = envelope_.size();
-  envelopeCentroid_.assign(nt, {});
-  envelopeRadius_.assign(nt, 0.0);
-  envelopeCell_.assign(nt, 0);
-  cellCount_.assign(cells + 1, 0);
-  cellTriangles_.assign(nt, 0);
-  cellGroupStart_.assign(cells + 1, 0);
-  groups_.assign(nt, {});
-  vertexCell_.assign(nv, 0);
-  candidatesOf_.assign(cells, {});
+  // The neighbour search over the container's box × [0, timeLength].
+  SpacetimeNeighbours::Layout layout;
+  layout.triangles = std::move(envelope_);
+  layout.triangleElement = std::move(envelopeElement_);
+  layout.vertexElement.resize(nv);
+  for (std::size_t v = 0; v < nv; ++v) layout.vertexElement[v] = sliceElement_[sliceOf_[v]];
+  layout.isSkin = isBoundary_;
+  layout.area.add(Vec3{area.min.x, area.min.y, 0.0});
+  layout.area.add(Vec3{area.max.x, area.max.y, spacetime_.timeLength});
+  layout.cellSize = parameters_.cellSize;
+  layout.shellReach = 2.5 * parameters_.cellSize;
+  layout.margin = kNeighbourMargin;
+  neighbours_.emplace(std::move(layout), pool_);
   computeReferencePoints(0, nv);
   computeSliceCentres();
-  buildGrid();
-}
-
-std::array<int, 3> SpacetimeSimulation::cellOf(Vec3 p) const {
-  const double inv = 1.0 / parameters_.cellSize;
-  auto clampTo = [](double v, int n) { return std::clamp(static_cast<int>(std::floor(v)), 0, n - 1); };
-  return {clampTo((p.x - gridOrigin_.x) * inv, nx_), clampTo((p.y - gridOrigin_.y) * inv, ny_),
-          clampTo((p.t - gridOrigin_.t) * inv, nt_)};
+  neighbours_->rebuild(position_);
 }
 
 // Where each vertex would be if its slice had its reference shape at its current growth:
@@ -201,191 +194,6 @@ void SpacetimeSimulation::computeReferencePoints(std::size_t begin, std::size_t 
     const Vec2 c = referenceCentre_[s];
     const Vec2 p = c + (reference_[v] - c) * growth_[s];
     referencePoint_[v] = {p.x, p.y, restTime_[s]};
-  }
-}
-
-namespace {
-
-// The cells around a query point: the 3 × 3 × 3 block nearest first (so close hits are found
-// early and prune the rest), then the outer shell of the 5 × 5 × 5 block.
-struct BlockOffsets {
-  std::array<std::array<int, 3>, 27> inner;
-  std::array<std::array<int, 3>, 98> shell;
-  BlockOffsets() {
-    int i = 0, s = 0;
-    for (int dt = -2; dt <= 2; ++dt)
-      for (int dy = -2; dy <= 2; ++dy)
-        for (int dx = -2; dx <= 2; ++dx) {
-          if (std::abs(dx) <= 1 && std::abs(dy) <= 1 && std::abs(dt) <= 1) inner[i++] = {dx, dy, dt};
-          else shell[s++] = {dx, dy, dt};
-        }
-    std::stable_sort(inner.begin(), inner.end(), [](const auto& a, const auto& b) {
-      return a[0] * a[0] + a[1] * a[1] + a[2] * a[2] < b[0] * b[0] + b[1] * b[1] + b[2] * b[2];
-    });
-  }
-};
-const BlockOffsets kBlock;
-
-}  // namespace
-
-void SpacetimeSimulation::buildGrid() {
-  const std::size_t nt = envelope_.size();
-  pool_.parallelFor(nt, 1024, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i) {
-      const auto& tri = envelope_[i];
-      const Vec3 a = position_[tri[0]], b = position_[tri[1]], c = position_[tri[2]];
-      const Vec3 centroid = (a + b + c) / 3.0;
-      envelopeCentroid_[i] = centroid;
-      envelopeRadius_[i] = std::sqrt(std::max({lengthSquared(a - centroid), lengthSquared(b - centroid), lengthSquared(c - centroid)}));
-      const auto [x, y, t] = cellOf(centroid);
-      envelopeCell_[i] = (t * ny_ + y) * nx_ + x;
-    }
-  });
-  // Counting sort by cell; stable, so each cell lists its triangles element by element.
-  std::fill(cellCount_.begin(), cellCount_.end(), 0);
-  for (std::size_t i = 0; i < nt; ++i) ++cellCount_[envelopeCell_[i] + 1];
-  const std::size_t cells = cellCount_.size() - 1;
-  for (std::size_t c = 0; c < cells; ++c) cellCount_[c + 1] += cellCount_[c];
-  // cellCount_ now holds starts; fill with a moving cursor kept in cellGroupStart_ temporarily.
-  std::copy(cellCount_.begin(), cellCount_.end(), cellGroupStart_.begin());
-  for (std::size_t i = 0; i < nt; ++i) cellTriangles_[cellGroupStart_[envelopeCell_[i]]++] = static_cast<int>(i);
-  // Runs of one element inside a cell become groups with a bounding sphere.
-  std::size_t groupCount = 0;
-  for (std::size_t c = 0; c < cells; ++c) {
-    cellGroupStart_[c] = static_cast<int>(groupCount);
-    for (int k = cellCount_[c]; k < cellCount_[c + 1];) {
-      const int element = envelopeElement_[cellTriangles_[k]];
-      int end = k;
-      Vec3 centre;
-      while (end < cellCount_[c + 1] && envelopeElement_[cellTriangles_[end]] == element)
-        centre += envelopeCentroid_[cellTriangles_[end++]];
-      centre = centre / static_cast<double>(end - k);
-      double radius = 0.0;
-      for (int j = k; j < end; ++j) {
-        const int tri = cellTriangles_[j];
-        radius = std::max(radius, distance(envelopeCentroid_[tri], centre) + envelopeRadius_[tri]);
-      }
-      groups_[groupCount++] = {element, k, end, centre, radius};
-      k = end;
-    }
-  }
-  cellGroupStart_[cells] = static_cast<int>(groupCount);
-  buildCandidates();
-}
-
-// The candidate groups of every cell that holds a skin vertex (see CellCandidates). A group is
-// left out only when no point of the cell can use it, so gatherHits finds exactly what a
-// search of the 5 × 5 × 5 block from each vertex would, in the same order.
-void SpacetimeSimulation::buildCandidates() {
-  const std::size_t nv = position_.size();
-  pool_.parallelFor(nv, 4096, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t v = begin; v < end; ++v)
-      if (isBoundary_[v]) {
-        const auto [x, y, t] = cellOf(position_[v]);
-        vertexCell_[v] = (t * ny_ + y) * nx_ + x;
-      }
-  });
-  for (CellCandidates& c : candidatesOf_) c.end = -1;  // not queried
-  queriedCells_.clear();
-  for (std::size_t v = 0; v < nv; ++v)
-    if (isBoundary_[v] && candidatesOf_[vertexCell_[v]].end < 0) {
-      candidatesOf_[vertexCell_[v]].end = 0;
-      queriedCells_.push_back(vertexCell_[v]);
-    }
-  std::sort(queriedCells_.begin(), queriedCells_.end());
-  // Room for every group of the block, then each cell fills its own range in parallel.
-  auto blockCell = [&](int cell, const std::array<int, 3>& o) {
-    const int x = cell % nx_ + o[0], y = cell / nx_ % ny_ + o[1], t = cell / (nx_ * ny_) + o[2];
-    if (x < 0 || x >= nx_ || y < 0 || y >= ny_ || t < 0 || t >= nt_) return -1;
-    return (t * ny_ + y) * nx_ + x;
-  };
-  int room = 0;
-  for (int cell : queriedCells_) {
-    candidatesOf_[cell].begin = room;
-    for (const auto& o : kBlock.inner)
-      if (const int c = blockCell(cell, o); c >= 0) room += cellGroupStart_[c + 1] - cellGroupStart_[c];
-    for (const auto& o : kBlock.shell)
-      if (const int c = blockCell(cell, o); c >= 0) room += cellGroupStart_[c + 1] - cellGroupStart_[c];
-  }
-  // Grows only while the packing spreads over more cells; a few steps in, it stays put.
-  if (candidates_.size() < static_cast<std::size_t>(room)) candidates_.resize(static_cast<std::size_t>(room) * 5 / 4);
-  const double cell = parameters_.cellSize, reach = cell, shellReach = 2.5 * cell;
-  constexpr double kSlack = 1e-9;  // canonical units: rounding never drops a group a vertex uses
-  constexpr double kInf = std::numeric_limits<double>::infinity();
-  pool_.parallelFor(queriedCells_.size(), 16, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t q = begin; q < end; ++q) {
-      const int index = queriedCells_[q];
-      const int ix = index % nx_, iy = index / nx_ % ny_, it = index / (nx_ * ny_);
-      // The cell's box; a border cell also holds the points clamped into it.
-      Vec3 lo{gridOrigin_.x + ix * cell, gridOrigin_.y + iy * cell, gridOrigin_.t + it * cell};
-      Vec3 hi{lo.x + cell, lo.y + cell, lo.t + cell};
-      if (ix == 0) lo.x = -kInf;
-      if (iy == 0) lo.y = -kInf;
-      if (it == 0) lo.t = -kInf;
-      if (ix == nx_ - 1) hi.x = kInf;
-      if (iy == ny_ - 1) hi.y = kInf;
-      if (it == nt_ - 1) hi.t = kInf;
-      auto boxDistance = [&](Vec3 p) {
-        const double dx = std::max({lo.x - p.x, 0.0, p.x - hi.x}), dy = std::max({lo.y - p.y, 0.0, p.y - hi.y}),
-                     dt = std::max({lo.t - p.t, 0.0, p.t - hi.t});
-        return std::sqrt(dx * dx + dy * dy + dt * dt);
-      };
-      CellCandidates& out = candidatesOf_[index];
-      int k = out.begin;
-      for (const auto& o : kBlock.inner)
-        if (const int c = blockCell(index, o); c >= 0)
-          for (int g = cellGroupStart_[c]; g < cellGroupStart_[c + 1]; ++g)
-            if (boxDistance(groups_[g].centre) - groups_[g].radius <= reach + kSlack) candidates_[k++] = g;
-      out.innerEnd = k;
-      for (const auto& o : kBlock.shell)
-        if (const int c = blockCell(index, o); c >= 0)
-          for (int g = cellGroupStart_[c]; g < cellGroupStart_[c + 1]; ++g)
-            if (boxDistance(groups_[g].centre) < shellReach + kSlack) candidates_[k++] = g;
-      out.end = k;
-    }
-  });
-}
-
-
-// The nearest point of every other element near vertex v (5.5.1): exact closest points on
-// envelope triangles in the 3 × 3 × 3 block of cells around it, and for elements seen only in
-// the outer shell of the 5 × 5 × 5 block, the centre of their triangles there. A group or
-// triangle that cannot come closer than the element's best hit so far is skipped.
-void SpacetimeSimulation::gatherHits(int v, Hits& hits) const {
-  const Vec3 x = position_[v];
-  const int self = sliceElement_[sliceOf_[v]];
-  const double reach = parameters_.cellSize, shellReach = 2.5 * parameters_.cellSize;
-  const CellCandidates& around = candidatesOf_[vertexCell_[v]];
-  for (int k = around.begin; k < around.innerEnd; ++k) {
-    const EnvelopeGroup& group = groups_[candidates_[k]];
-    if (group.element == self) continue;
-    const double toCentre = distance(x, group.centre);
-    const double bound = toCentre - group.radius;  // nothing in the group is nearer
-    if (bound > reach) continue;
-    const int known = hits.find(group.element);
-    double best = known >= 0 && hits[known].exact ? hits[known].d2 : reach * reach;
-    if (bound > 0.0 && bound * bound >= best) continue;
-    for (int j = group.begin; j < group.end; ++j) {
-      const int tri = cellTriangles_[j];
-      const double triBound = distance(x, envelopeCentroid_[tri]) - envelopeRadius_[tri];
-      if (triBound > 0.0 && triBound * triBound >= best) continue;
-      const auto& corners = envelope_[tri];
-      const Vec3 q = closestPointOnTriangle(x, position_[corners[0]], position_[corners[1]], position_[corners[2]]);
-      const double d2 = lengthSquared(q - x);
-      if (d2 < best) {
-        best = d2;
-        hits.offer({group.element, d2, q, true});
-      }
-    }
-  }
-  for (int k = around.innerEnd; k < around.end; ++k) {
-    const EnvelopeGroup& group = groups_[candidates_[k]];
-    if (group.element == self) continue;
-    const double d2 = lengthSquared(x - group.centre);
-    if (d2 >= shellReach * shellReach) continue;
-    const int known = hits.find(group.element);
-    if (known >= 0 && hits[known].exact) continue;
-    hits.offer({group.element, d2, group.centre, false});
   }
 }
 
@@ -428,8 +236,8 @@ void SpacetimeSimulation::computeForces(std::size_t begin, std::size_t end) {
     bool inside = false;
     double gap = kFar;
     if (isBoundary_[v]) {
-      Hits hits;
-      gatherHits(static_cast<int>(v), hits);
+      SpacetimeNeighbours::Hits hits;
+      neighbours_->gather(static_cast<int>(v), position_, hits);
       for (int k = 0; k < hits.size() && !inside; ++k)
         if (hits[k].exact) inside = insideElementAt(hits[k].element, x);
       if (inside) {
@@ -440,7 +248,7 @@ void SpacetimeSimulation::computeForces(std::size_t begin, std::size_t end) {
         }
         gap = 0.0;
       } else {
-        for (const Hit& hit : hits) {
+        for (const SpacetimeNeighbours::Hit& hit : hits) {
           f += forces::repulsion(x, hit.point, P.repulsionStrength, P.soft);
           if (hit.exact) gap = std::min(gap, std::sqrt(hit.d2));
         }
@@ -602,8 +410,9 @@ void SpacetimeSimulation::keepGuidedUp() {
     const double floor = spacetime_.guidedGrowth * median;
     for (const ElementRecord& e : elements_) {
       const int s = e.sliceBegin + k;
-      // Behind, not grown this step by the common rule, and inside: one growth step.
-      if (e.guided && growth_[s] < floor && growth_[s] == previousGrowth_[s] && !sliceOutside_[s])
+      // Behind or level (so the ratio never ends a rounding short of the share), not grown this
+      // step by the common rule, and inside: one growth step.
+      if (e.guided && growth_[s] <= floor && growth_[s] == previousGrowth_[s] && !sliceOutside_[s])
         growth_[s] = growthRule_.grown(growth_[s]);
     }
   }
@@ -613,7 +422,7 @@ void SpacetimeSimulation::step() {
   assert(finalized_ && "step only after finalize");
   const std::size_t nv = position_.size(), ns = growth_.size();
   pool_.parallelFor(nv, 2048, [&](std::size_t b, std::size_t e) { computeReferencePoints(b, e); });
-  buildGrid();
+  if (neighboursStale_) neighbours_->rebuild(position_);
   pool_.parallelFor(nv, 256, [&](std::size_t b, std::size_t e) { computeForces(b, e); });
   pool_.parallelFor(nv, 4096, [&](std::size_t b, std::size_t e) { integrate(b, e); });
   pool_.parallelFor(elements_.size(), 1, [&](std::size_t b, std::size_t e) { applySliceConstraints(b, e); });
@@ -635,6 +444,7 @@ void SpacetimeSimulation::step() {
   largestSliceGap_ = largestGap;
   growingSlices_ = growing;
   overlappingSlices_ = overlapping;
+  neighboursStale_ = neighbours_->stale(position_);
   ++iteration_;
   assert(allFinite(position_.data(), position_.data() + position_.size()) && "a step left a non-finite position");
 }
@@ -644,9 +454,11 @@ double SpacetimeSimulation::minGrowth() const {
 }
 
 void SpacetimeSimulation::restoreState(int iteration, std::vector<Vec3> positions, std::vector<Vec3> velocities,
-                                       std::vector<double> growth, std::vector<double> previousGrowth) {
+                                       std::vector<double> growth, std::vector<double> previousGrowth,
+                                       const std::vector<Vec3>& neighbourOrigin) {
   assert(finalized_ && "state is restored after finalize");
   assert(positions.size() == position_.size() && velocities.size() == velocity_.size() && growth.size() == growth_.size());
+  assert(neighbourOrigin.size() == position_.size());
   iteration_ = iteration;
   position_ = std::move(positions);
   velocity_ = std::move(velocities);
@@ -656,6 +468,9 @@ void SpacetimeSimulation::restoreState(int iteration, std::vector<Vec3> position
   for (const ElementRecord& e : elements_)
     for (int s = 0; s < slices_; ++s) sliceTime_[e.sliceBegin + s] = position_[e.vertexBegin + s * e.verticesPerSlice].t;
   computeSliceCentres();
+  // The lists the uninterrupted run would have now: built where it built them.
+  neighbours_->rebuild(neighbourOrigin);
+  neighboursStale_ = neighbours_->stale(position_);
 }
 
 void SpacetimeSimulation::computeSliceCentres() {

@@ -5,20 +5,21 @@
 // the same force laws (sim/forces.hpp), the same explicit Euler step with damping and a
 // velocity cap (sim/explicit_euler.hpp), the same growth rule, hit list and adjacency tables,
 // forces from a frozen snapshot in parallel (results do not depend on the thread count), and
-// no allocation inside `step`. What is new: envelope triangles in a 3D grid for the neighbour
-// queries (5.5.1), the temporal force, target-point springs, the slice constraints (5.5.2)
-// and per-slice growth (5.5.3).
+// no allocation inside `step` once its buffers have grown. What is new: the envelope
+// triangles' neighbour search (5.5.1, SpacetimeNeighbours), the temporal force, target-point
+// springs, the slice constraints (5.5.2) and per-slice growth (5.5.3).
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "pak/animation/spacetime_parameters.hpp"
 #include "pak/geom/vec3.hpp"
 #include "pak/sim/element_mesh.hpp"
 #include "pak/sim/simulation_parameters.hpp"
+#include "animation/spacetime_neighbours.hpp"
 #include "sim/explicit_euler.hpp"
 #include "sim/growth_rule.hpp"
-#include "sim/nearest_hits.hpp"
 #include "sim/parallel.hpp"
 #include "sim/region_index.hpp"
 #include "sim/vertex_adjacency.hpp"
@@ -69,8 +70,10 @@ class SpacetimeSimulation {
   // Each slice's g before the last step's growth: one that did not grow feels the pocket
   // pressure in the next step.
   const std::vector<double>& previousGrowth() const { return previousGrowth_; }
+  // Where the vertices were when the neighbour lists were last built (SpacetimeNeighbours).
+  const std::vector<Vec3>& neighbourOrigin() const { return neighbours_->origin(); }
   void restoreState(int iteration, std::vector<Vec3> positions, std::vector<Vec3> velocities, std::vector<double> growth,
-                    std::vector<double> previousGrowth);
+                    std::vector<double> previousGrowth, const std::vector<Vec3>& neighbourOrigin);
 
   // --- layout and measurements
   int slices() const { return slices_; }
@@ -79,7 +82,7 @@ class SpacetimeSimulation {
   int verticesPerSlice(int element) const { return elements_[element].verticesPerSlice; }
   std::size_t vertexCount() const { return position_.size(); }
   std::size_t springCount() const { return springsAt_.entries.size() / 2; }
-  std::size_t envelopeTriangleCount() const { return envelope_.size(); }
+  std::size_t envelopeTriangleCount() const { return neighbours_->triangleCount(); }
   // Mean over slices of the skins' area over the container area.
   double fill() const { return fill_; }
   // Slices still allowed to grow, and slices overlapping another element after the last step.
@@ -97,23 +100,7 @@ class SpacetimeSimulation {
     double torsionStrength;
     bool guided;  // has target points
   };
-  struct EnvelopeGroup { int element, begin, end; Vec3 centre; double radius; };
-  // The nearest point of another element: exact (on an envelope triangle) or approximate
-  // (the centre of its triangles in a far cell); any exact hit is nearer than an approximate one.
-  struct Hit {
-    int element; double d2; Vec3 point; bool exact;
-    int key() const { return element; }
-    bool nearerThan(const Hit& other) const {
-      return (exact && !other.exact) || (exact == other.exact && d2 < other.d2);
-    }
-  };
-  static constexpr int kMaxHits = 16;
-  using Hits = NearestHitList<Hit, kMaxHits>;
-
   void computeReferencePoints(std::size_t begin, std::size_t end);
-  void buildGrid();
-  void buildCandidates();
-  void gatherHits(int v, Hits& hits) const;
   bool insideElementAt(int element, Vec3 x) const;
   void computeForces(std::size_t begin, std::size_t end);
   void integrate(std::size_t begin, std::size_t end);
@@ -124,7 +111,6 @@ class SpacetimeSimulation {
   // SpacetimeParameters::guidedGrowth: after the common growth rule, a guided slice below the
   // share of its slice index's median unguided g grows a step regardless of contacts.
   void keepGuidedUp();
-  std::array<int, 3> cellOf(Vec3 p) const;
 
   const RegionIndex& container_;
   double containerArea_;
@@ -159,25 +145,11 @@ class SpacetimeSimulation {
   std::vector<Vec2> referenceCentre_, sliceCentre_;
   std::vector<std::uint8_t> sliceOverlapping_, sliceOutside_;
   std::vector<double> sliceGap_, sliceArea_;
-  // Envelope triangles (5.5.1) and the collision grid of their centroids, grouped per cell
-  // and element so a far element is skipped in one test and the outer shell uses one point.
+  // Envelope triangles (5.5.1), until finalize hands them to the neighbour search.
   std::vector<std::array<int, 3>> envelope_;
   std::vector<int> envelopeElement_;
-  std::vector<Vec3> envelopeCentroid_;
-  std::vector<double> envelopeRadius_;
-  std::vector<int> envelopeCell_, cellCount_, cellTriangles_, cellGroupStart_;
-  std::vector<EnvelopeGroup> groups_;
-  // Per cell that holds a skin vertex, the groups its vertices may see, in the order
-  // gatherHits visits them (nearest cells first, then the outer shell): those of the 3 × 3 × 3
-  // block in [begin, innerEnd), those of the shell in [innerEnd, end). Groups no point of the
-  // cell can reach are left out. Built once per step, shared by the cell's vertices.
-  struct CellCandidates { int begin = 0, innerEnd = 0, end = 0; };
-  std::vector<int> vertexCell_;            // per skin vertex
-  std::vector<int> queriedCells_;          // cells holding a skin vertex, in cell order
-  std::vector<CellCandidates> candidatesOf_;  // per cell
-  std::vector<int> candidates_;            // group indices
-  Vec3 gridOrigin_;
-  int nx_ = 0, ny_ = 0, nt_ = 0;
+  std::optional<SpacetimeNeighbours> neighbours_;
+  bool neighboursStale_ = false;
   // Loops.
   struct Loop { int from, to; Vec2 turn; };
   std::vector<Loop> loops_;

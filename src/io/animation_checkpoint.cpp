@@ -13,7 +13,7 @@ namespace pak {
 
 namespace {
 
-constexpr char kMagic[8] = {'P', 'A', 'K', 'A', 'N', 'I', 'M', '3'};
+constexpr char kMagic[8] = {'P', 'A', 'K', 'A', 'N', 'I', 'M', '4'};
 
 template <class T>
 void put(std::string& out, const T& value) {
@@ -48,7 +48,7 @@ std::uint64_t fingerprintBytes(const std::string& bytes, std::uint64_t seed) {
 }
 
 void writeAnimationCheckpoint(const AnimationState& state, std::uint64_t fingerprint, const std::string& path) {
-  assert(state.previousGrowth.size() == state.growth.size());
+  assert(state.previousGrowth.size() == state.growth.size() && state.neighbourOrigin.size() == state.positions.size());
   std::string out(kMagic, sizeof kMagic);
   put(out, fingerprint);
   put(out, static_cast<std::int64_t>(state.iteration));
@@ -56,6 +56,7 @@ void writeAnimationCheckpoint(const AnimationState& state, std::uint64_t fingerp
   put(out, static_cast<std::uint64_t>(state.growth.size()));
   for (const Vec3& p : state.positions) put(out, p.x), put(out, p.y), put(out, p.t);
   for (const Vec3& v : state.velocities) put(out, v.x), put(out, v.y), put(out, v.t);
+  for (const Vec3& p : state.neighbourOrigin) put(out, p.x), put(out, p.y), put(out, p.t);
   for (double g : state.growth) put(out, g);
   for (double g : state.previousGrowth) put(out, g);
   put(out, static_cast<std::uint64_t>(state.recentMeanGrowth.size()));
@@ -75,7 +76,7 @@ AnimationState readAnimationCheckpoint(const std::string& path, std::uint64_t fi
   AnimationState state;
   const std::int64_t iteration = in.get<std::int64_t>();
   const std::uint64_t vertices = in.get<std::uint64_t>(), slices = in.get<std::uint64_t>();
-  if (iteration < 0 || vertices > (bytes.size() / 48) || slices > bytes.size() / 8)
+  if (iteration < 0 || vertices > (bytes.size() / 72) || slices > bytes.size() / 8)
     throw InputError(path, "checkpoint header is damaged");
   state.iteration = static_cast<int>(iteration);
   auto vec = [&] {
@@ -88,6 +89,8 @@ AnimationState readAnimationCheckpoint(const std::string& path, std::uint64_t fi
   for (std::uint64_t k = 0; k < vertices; ++k) state.positions.push_back(vec());
   state.velocities.reserve(vertices);
   for (std::uint64_t k = 0; k < vertices; ++k) state.velocities.push_back(vec());
+  state.neighbourOrigin.reserve(vertices);
+  for (std::uint64_t k = 0; k < vertices; ++k) state.neighbourOrigin.push_back(vec());
   state.growth.reserve(slices);
   for (std::uint64_t k = 0; k < slices; ++k) state.growth.push_back(in.get<double>());
   state.previousGrowth.reserve(slices);

@@ -1,6 +1,9 @@
 // packAnimation end to end on a small scene, and frames (thesis 5.4–5.6).
 #include "pak/animation/animation.hpp"
 
+#include <cmath>
+#include <numbers>
+
 #include <gtest/gtest.h>
 
 #include "animation/animation_fixtures.hpp"
@@ -220,3 +223,39 @@ TEST(AnimationPack, BadInputIsAnInputError) {
 
 }  // namespace
 }  // namespace pak
+
+TEST(AnimationPack, MeanCentroidAccelerationIsTheCentroidsSecondDifference) {
+  // One element circling at radius 10 (input units) over a loop of 8 slices (t = s / 8, the
+  // last equal to the first); 2 canonical units per input unit.
+  AnimatedPacking a;
+  a.loop = true;
+  a.canonicalScale = 2.0;
+  auto circling = [](bool guided) {
+    AnimatedElement e;
+    e.guided = guided;
+    for (int s = 0; s <= 8; ++s) {
+      const double angle = 2.0 * std::numbers::pi * s / 8.0;
+      const Vec2 c{10.0 * std::cos(angle), 10.0 * std::sin(angle)};
+      e.sliceTimes.push_back(s / 8.0);
+      e.slices.push_back({c + Vec2{1, 0}, c + Vec2{-1, 0}, c + Vec2{0, 3}, c + Vec2{0, -3}});  // centred on c
+    }
+    return e;
+  };
+  a.elements = {circling(false), circling(true)};  // the guided one is left out
+  // 8 frames land on the slices: |c(i-1) - 2 c(i) + c(i+1)| = 2 r (1 - cos 45°) on the circle.
+  EXPECT_NEAR(meanCentroidAcceleration(a, 8), 2.0 * 2.0 * 10.0 * (1.0 - std::cos(std::numbers::pi / 4.0)), 1e-9);
+  // 16 frames: every other frame lies on a chord's midpoint, whose second difference is 0;
+  // at a slice it is half the above (its neighbours are the chords' midpoints).
+  EXPECT_NEAR(meanCentroidAcceleration(a, 16), 0.5 * 0.5 * 2.0 * 2.0 * 10.0 * (1.0 - std::cos(std::numbers::pi / 4.0)),
+              1e-9);
+  // A straight, steady path does not accelerate; an open animation has no wrap-around.
+  a.loop = false;
+  for (AnimatedElement& e : a.elements)
+    for (int s = 0; s <= 8; ++s)
+      for (Vec2& p : e.slices[s]) {
+        const double angle = 2.0 * std::numbers::pi * s / 8.0;
+        p = p - Vec2{10.0 * std::cos(angle), 10.0 * std::sin(angle)} + Vec2{3.0 * s, 0.0};
+      }
+  EXPECT_NEAR(meanCentroidAcceleration(a, 17), 0.0, 1e-9);
+  EXPECT_EQ(meanCentroidAcceleration(a, 2), 0.0);
+}

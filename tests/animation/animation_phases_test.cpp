@@ -86,7 +86,7 @@ TEST(AnimationPhases, CollectingUnfoldsASliceFoldedOverItself) {
   x[v].y = across.y;
   slice[v - first] = across;
   ASSERT_GT(foldsOf(slice), 0u);
-  sim.restoreState(sim.iteration(), x, sim.velocities(), sim.growth(), sim.previousGrowth());
+  sim.restoreState(sim.iteration(), x, sim.velocities(), sim.growth(), sim.previousGrowth(), sim.neighbourOrigin());
 
   const AnimatedPacking collected = collectAnimation(run, seeding, sim, stop, pool);
   EXPECT_EQ(collected.unfoldedSlices, 1);

@@ -119,7 +119,7 @@ TEST(SpacetimeSimulation, RestoredStateContinuesBitIdentically) {
   TwoTubes straight(1), resumed(1);
   for (int step = 0; step < 15; ++step) straight.sim.step();
   resumed.sim.restoreState(straight.sim.iteration(), straight.sim.positions(), straight.sim.velocities(), straight.sim.growth(),
-                           straight.sim.previousGrowth());
+                           straight.sim.previousGrowth(), straight.sim.neighbourOrigin());
   for (int step = 0; step < 15; ++step) straight.sim.step(), resumed.sim.step();
   EXPECT_EQ(resumed.sim.iteration(), straight.sim.iteration());
   for (std::size_t v = 0; v < straight.sim.positions().size(); ++v)
@@ -164,7 +164,8 @@ TEST(SpacetimeSimulationDeathTest, AssertsFinitePositionsAfterAStep) {
   TwoTubes tubes(1);
   std::vector<Vec3> positions = tubes.sim.positions();
   positions[3].x = std::numeric_limits<double>::quiet_NaN();
-  tubes.sim.restoreState(0, positions, tubes.sim.velocities(), tubes.sim.growth(), tubes.sim.previousGrowth());
+  tubes.sim.restoreState(0, positions, tubes.sim.velocities(), tubes.sim.growth(), tubes.sim.previousGrowth(),
+                         tubes.sim.neighbourOrigin());
   EXPECT_DEATH(tubes.sim.step(), "non-finite position");
 }
 #endif

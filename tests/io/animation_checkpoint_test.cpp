@@ -21,6 +21,7 @@ AnimationState sampleState() {
   s.velocities = {{0.5, -0.25, 1e-3}, {0.0, 0.0, -0.0}};
   s.growth = {0.1, 0.7};
   s.previousGrowth = {0.1, 0.699};
+  s.neighbourOrigin = {{0.9, 2.1, 0.0}, {0.25, 1e-9, 999.5}};
   s.recentMeanGrowth = {0.3, 0.31, 0.32};
   s.recorded = 17;
   return s;
@@ -36,6 +37,7 @@ TEST(AnimationCheckpoint, RoundTripsExactly) {
   EXPECT_EQ(r.velocities, s.velocities);
   EXPECT_EQ(r.growth, s.growth);
   EXPECT_EQ(r.previousGrowth, s.previousGrowth);
+  EXPECT_EQ(r.neighbourOrigin, s.neighbourOrigin);
   EXPECT_EQ(r.recentMeanGrowth, s.recentMeanGrowth);
   EXPECT_EQ(r.recorded, s.recorded);
   std::filesystem::remove(path);

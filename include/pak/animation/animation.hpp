@@ -28,6 +28,9 @@ struct AnimationState {
   std::vector<Vec3> positions, velocities;
   std::vector<double> growth;
   std::vector<double> previousGrowth;  // each slice's g before the last step's growth
+  // Where the vertices were when the neighbour lists were last built: a resumed run builds
+  // the same lists, so it goes on bit-identically.
+  std::vector<Vec3> neighbourOrigin;
   // The stopping rule's memory: mean growth of recent iterations (a ring indexed by
   // iteration) and how many iterations it has seen.
   std::vector<double> recentMeanGrowth;
@@ -102,6 +105,13 @@ Packing animationFrame(const AnimatedPacking& animation, double t);
 // median g of the unguided elements' slices of the same index: how small guided elements come
 // out. 1 when there is no guided or no unguided element.
 double smallestGuidedGrowthRatio(const AnimatedPacking& animation);
+
+// How frantically the elements move (thesis Fig. 5.21): the mean, over the unguided elements
+// and `frames` frames evenly spaced in t (as pak animate renders them), of the length of the
+// centroid's second difference c(i − 1) − 2 c(i) + c(i + 1), in canonical units per frame².
+// A loop wraps around. Scripted translations count too; guided elements, whose path is
+// scripted, are left out. 0 with fewer than 3 frames.
+double meanCentroidAcceleration(const AnimatedPacking& animation, int frames);
 
 // Frame separation (FrameSeparationOptions, docs/animationpak.md), done by packAnimation:
 // frames at `samples` evenly spaced t are separated, and each element's shrinking is eased

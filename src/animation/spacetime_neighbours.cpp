@@ -1,0 +1,333 @@
+#include "animation/spacetime_neighbours.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <limits>
+
+namespace pak {
+
+namespace {
+
+// The 5 × 5 × 5 block of cells around a query cell: the 3 × 3 × 3 block nearest first, then
+// the outer shell.
+struct BlockOffsets {
+  std::array<std::array<int, 3>, 27> inner;
+  std::array<std::array<int, 3>, 98> shell;
+  BlockOffsets() {
+    int i = 0, s = 0;
+    for (int dt = -2; dt <= 2; ++dt)
+      for (int dy = -2; dy <= 2; ++dy)
+        for (int dx = -2; dx <= 2; ++dx) {
+          if (std::abs(dx) <= 1 && std::abs(dy) <= 1 && std::abs(dt) <= 1) inner[i++] = {dx, dy, dt};
+          else shell[s++] = {dx, dy, dt};
+        }
+    std::stable_sort(inner.begin(), inner.end(), [](const auto& a, const auto& b) {
+      return a[0] * a[0] + a[1] * a[1] + a[2] * a[2] < b[0] * b[0] + b[1] * b[1] + b[2] * b[2];
+    });
+  }
+};
+const BlockOffsets kBlock;
+
+Box3 triangleBox(Vec3 a, Vec3 b, Vec3 c) {
+  Box3 box;
+  box.add(a), box.add(b), box.add(c);
+  return box;
+}
+
+}  // namespace
+
+SpacetimeNeighbours::SpacetimeNeighbours(Layout layout, ThreadPool& pool) : layout_(std::move(layout)), pool_(pool) {
+  const double cell = layout_.cellSize;
+  assert(cell > 0.0 && layout_.margin > 0.0 && layout_.shellReach >= cell);
+  const Box3& area = layout_.area;
+  gridOrigin_ = {area.lo.x - cell, area.lo.y - cell, area.lo.t - cell};
+  auto cellsAlong = [&](double length) { return std::max(1, static_cast<int>(std::ceil((length + 2 * cell) / cell))); };
+  nx_ = cellsAlong(area.hi.x - area.lo.x);
+  ny_ = cellsAlong(area.hi.y - area.lo.y);
+  nt_ = cellsAlong(area.hi.t - area.lo.t);
+  const std::size_t cells = static_cast<std::size_t>(nx_) * ny_ * nt_;
+  const std::size_t nt = layout_.triangles.size(), nv = layout_.vertexElement.size();
+  centroid_.assign(nt, {});
+  triangleBox_.assign(nt, {});
+  triangleCell_.assign(nt, 0);
+  cellStart_.assign(cells + 1, 0);
+  cellTriangles_.assign(nt, 0);
+  cellGroupStart_.assign(cells + 1, 0);
+  groups_.assign(nt, {});
+  vertexCell_.assign(nv, 0);
+  candidatesOf_.assign(cells, {});
+  lists_.assign(nv, {});
+  chunks_.resize((nv + kChunk - 1) / kChunk);
+}
+
+int SpacetimeNeighbours::cellOf(Vec3 p) const {
+  const double inv = 1.0 / layout_.cellSize;
+  auto clampTo = [](double v, int n) { return std::clamp(static_cast<int>(std::floor(v)), 0, n - 1); };
+  const int x = clampTo((p.x - gridOrigin_.x) * inv, nx_), y = clampTo((p.y - gridOrigin_.y) * inv, ny_),
+            t = clampTo((p.t - gridOrigin_.t) * inv, nt_);
+  return (t * ny_ + y) * nx_ + x;
+}
+
+void SpacetimeNeighbours::rebuild(const std::vector<Vec3>& origin) {
+  assert(origin.size() == layout_.vertexElement.size());
+  origin_ = origin;
+  buildGrid();
+  buildCandidates();
+  pool_.parallelFor(chunks_.size(), 1, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t c = begin; c < end; ++c) buildLists(static_cast<int>(c));
+  });
+}
+
+bool SpacetimeNeighbours::stale(const std::vector<Vec3>& positions) const {
+  const double limit = 0.25 * layout_.margin * layout_.margin;  // (margin / 2)²
+  for (std::size_t v = 0; v < positions.size(); ++v)
+    if (layout_.isSkin[v] && lengthSquared(positions[v] - origin_[v]) > limit) return true;
+  return false;
+}
+
+// The envelope triangles by cell of their centroid, and within a cell in runs of one element
+// (groups), each with its centre and bounding box.
+void SpacetimeNeighbours::buildGrid() {
+  const std::size_t nt = layout_.triangles.size();
+  pool_.parallelFor(nt, 1024, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      const auto& tri = layout_.triangles[i];
+      const Vec3 a = origin_[tri[0]], b = origin_[tri[1]], c = origin_[tri[2]];
+      centroid_[i] = (a + b + c) / 3.0;
+      triangleBox_[i] = triangleBox(a, b, c);
+      triangleCell_[i] = cellOf(centroid_[i]);
+    }
+  });
+  // Counting sort by cell; stable, so each cell lists its triangles element by element.
+  std::fill(cellStart_.begin(), cellStart_.end(), 0);
+  for (std::size_t i = 0; i < nt; ++i) ++cellStart_[triangleCell_[i] + 1];
+  const std::size_t cells = cellStart_.size() - 1;
+  for (std::size_t c = 0; c < cells; ++c) cellStart_[c + 1] += cellStart_[c];
+  std::copy(cellStart_.begin(), cellStart_.end(), cellGroupStart_.begin());  // a moving cursor, for now
+  for (std::size_t i = 0; i < nt; ++i) cellTriangles_[cellGroupStart_[triangleCell_[i]]++] = static_cast<int>(i);
+  std::size_t groupCount = 0;
+  for (std::size_t c = 0; c < cells; ++c) {
+    cellGroupStart_[c] = static_cast<int>(groupCount);
+    for (int k = cellStart_[c]; k < cellStart_[c + 1];) {
+      const int element = layout_.triangleElement[cellTriangles_[k]];
+      Group group{element, k, k, {}, {}};
+      while (group.end < cellStart_[c + 1] && layout_.triangleElement[cellTriangles_[group.end]] == element) {
+        const int tri = cellTriangles_[group.end++];
+        group.centre += centroid_[tri];
+        group.box.add(triangleBox_[tri]);
+      }
+      group.centre = group.centre / static_cast<double>(group.end - group.begin);
+      groups_[groupCount++] = group;
+      k = group.end;
+    }
+  }
+  cellGroupStart_[cells] = static_cast<int>(groupCount);
+}
+
+// Per cell holding a skin vertex: the groups of the 5 × 5 × 5 block that come within reach
+// plus the margin of the cell, then the groups of the outer shell whose centre comes within
+// the shell reach plus the margin.
+void SpacetimeNeighbours::buildCandidates() {
+  const std::size_t nv = origin_.size();
+  pool_.parallelFor(nv, 4096, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t v = begin; v < end; ++v)
+      if (layout_.isSkin[v]) vertexCell_[v] = cellOf(origin_[v]);
+  });
+  for (CellCandidates& c : candidatesOf_) c.end = -1;  // not queried
+  queriedCells_.clear();
+  for (std::size_t v = 0; v < nv; ++v)
+    if (layout_.isSkin[v] && candidatesOf_[vertexCell_[v]].end < 0) {
+      candidatesOf_[vertexCell_[v]].end = 0;
+      queriedCells_.push_back(vertexCell_[v]);
+    }
+  std::sort(queriedCells_.begin(), queriedCells_.end());
+  auto blockCell = [&](int cell, const std::array<int, 3>& o) {
+    const int x = cell % nx_ + o[0], y = cell / nx_ % ny_ + o[1], t = cell / (nx_ * ny_) + o[2];
+    if (x < 0 || x >= nx_ || y < 0 || y >= ny_ || t < 0 || t >= nt_) return -1;
+    return (t * ny_ + y) * nx_ + x;
+  };
+  auto groupsIn = [&](int c) { return c < 0 ? 0 : cellGroupStart_[c + 1] - cellGroupStart_[c]; };
+  // Room for every group of the block twice (near, then shell); each cell fills its own range.
+  int room = 0;
+  for (int cell : queriedCells_) {
+    candidatesOf_[cell].begin = room;
+    for (const auto& o : kBlock.inner) room += groupsIn(blockCell(cell, o));
+    for (const auto& o : kBlock.shell) room += 2 * groupsIn(blockCell(cell, o));
+  }
+  if (candidates_.size() < static_cast<std::size_t>(room)) candidates_.resize(static_cast<std::size_t>(room) * 5 / 4);
+  const double cell = layout_.cellSize, margin = layout_.margin;
+  const double nearReach2 = (cell + margin) * (cell + margin);
+  const double farReach2 = (layout_.shellReach + margin) * (layout_.shellReach + margin);
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  pool_.parallelFor(queriedCells_.size(), 16, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t q = begin; q < end; ++q) {
+      const int index = queriedCells_[q];
+      const int ix = index % nx_, iy = index / nx_ % ny_, it = index / (nx_ * ny_);
+      // The cell's box; a border cell also holds the points clamped into it.
+      Box3 box;
+      box.lo = {gridOrigin_.x + ix * cell, gridOrigin_.y + iy * cell, gridOrigin_.t + it * cell};
+      box.hi = {box.lo.x + cell, box.lo.y + cell, box.lo.t + cell};
+      if (ix == 0) box.lo.x = -kInf;
+      if (iy == 0) box.lo.y = -kInf;
+      if (it == 0) box.lo.t = -kInf;
+      if (ix == nx_ - 1) box.hi.x = kInf;
+      if (iy == ny_ - 1) box.hi.y = kInf;
+      if (it == nt_ - 1) box.hi.t = kInf;
+      CellCandidates& out = candidatesOf_[index];
+      int k = out.begin;
+      auto addNear = [&](const std::array<int, 3>& o) {
+        if (const int c = blockCell(index, o); c >= 0)
+          for (int g = cellGroupStart_[c]; g < cellGroupStart_[c + 1]; ++g)
+            if (distanceSquared(box, groups_[g].box) <= nearReach2) candidates_[k++] = g;
+      };
+      for (const auto& o : kBlock.inner) addNear(o);
+      for (const auto& o : kBlock.shell) addNear(o);
+      out.end = out.shellBegin = k;
+      for (const auto& o : kBlock.shell)
+        if (const int c = blockCell(index, o); c >= 0)
+          for (int g = cellGroupStart_[c]; g < cellGroupStart_[c + 1]; ++g)
+            if (distanceSquared(box, groups_[g].centre) < farReach2) candidates_[k++] = g;
+      out.shellEnd = k;
+    }
+  });
+}
+
+// Each skin vertex of one chunk: per other element within reach plus the margin, its
+// triangles within twice the margin of its nearest (nearest first); per element in the shell,
+// its nearest group centre.
+void SpacetimeNeighbours::buildLists(int chunkIndex) {
+  Chunk& chunk = chunks_[chunkIndex];
+  chunk.near.clear();
+  chunk.far.clear();
+  const double reach = layout_.cellSize, margin = layout_.margin;
+  const double listReach = reach + margin;
+  const double farReach2 = (layout_.shellReach + margin) * (layout_.shellReach + margin);
+  // Elements near one vertex: a handful (they are at least a gap apart); more are ignored.
+  constexpr int kElements = 32;
+  struct Near { int element; double best2; };
+  struct Far { int element; double d2; Vec3 centre; };
+  struct Listed { double d2; int triangle; };
+  constexpr int kListed = 256;
+  std::array<Near, kElements> near;
+  std::array<Far, kElements> far;
+  std::array<Listed, kListed> listed;
+  const int vBegin = chunkIndex * kChunk;
+  const int vEnd = std::min(vBegin + kChunk, static_cast<int>(origin_.size()));
+  for (int v = vBegin; v < vEnd; ++v) {
+    VertexLists& lists = lists_[v];
+    lists.nearBegin = static_cast<int>(chunk.near.size());
+    lists.farBegin = static_cast<int>(chunk.far.size());
+    if (!layout_.isSkin[v]) {
+      lists.nearEnd = lists.nearBegin, lists.farEnd = lists.farBegin;
+      continue;
+    }
+    const Vec3 x = origin_[v];
+    const int self = layout_.vertexElement[v];
+    const CellCandidates& around = candidatesOf_[vertexCell_[v]];
+    // Each element's nearest distance (capped at the list reach), groups nearest cells first.
+    int elements = 0;
+    for (int k = around.begin; k < around.end; ++k) {
+      const Group& group = groups_[candidates_[k]];
+      if (group.element == self) continue;
+      const double bound2 = distanceSquared(group.box, x);
+      if (bound2 >= listReach * listReach) continue;
+      int e = 0;
+      while (e < elements && near[e].element != group.element) ++e;
+      if (e == elements) {
+        if (elements == kElements) continue;
+        near[elements++] = {group.element, listReach * listReach};
+      }
+      double& best2 = near[e].best2;
+      if (bound2 >= best2) continue;
+      for (int j = group.begin; j < group.end; ++j) {
+        const int tri = cellTriangles_[j];
+        if (distanceSquared(triangleBox_[tri], x) >= best2) continue;
+        const auto& c = layout_.triangles[tri];
+        best2 = std::min(best2, lengthSquared(closestPointOnTriangle(x, origin_[c[0]], origin_[c[1]], origin_[c[2]]) - x));
+      }
+    }
+    // Per element: every triangle that may become its nearest before the next rebuild.
+    for (int e = 0; e < elements; ++e) {
+      if (near[e].best2 >= listReach * listReach) continue;
+      const double limit = std::min(std::sqrt(near[e].best2) + 2.0 * margin, listReach), limit2 = limit * limit;
+      const std::size_t header = chunk.near.size();
+      chunk.near.push_back(near[e].element);
+      chunk.near.push_back(0);  // the count, below
+      int count = 0;
+      for (int k = around.begin; k < around.end; ++k) {
+        const Group& group = groups_[candidates_[k]];
+        if (group.element != near[e].element || distanceSquared(group.box, x) > limit2) continue;
+        for (int j = group.begin; j < group.end; ++j) {
+          const int tri = cellTriangles_[j];
+          if (distanceSquared(triangleBox_[tri], x) > limit2) continue;
+          const auto& c = layout_.triangles[tri];
+          const double d2 = lengthSquared(closestPointOnTriangle(x, origin_[c[0]], origin_[c[1]], origin_[c[2]]) - x);
+          if (d2 > limit2) continue;
+          if (count == kListed) {  // beyond the sorted ones (not seen in practice): still listed
+            chunk.near.push_back(tri);
+            continue;
+          }
+          // Nearest first (ties by triangle), so that gather prunes early.
+          int at = count++;
+          for (; at > 0 && (listed[at - 1].d2 > d2 || (listed[at - 1].d2 == d2 && listed[at - 1].triangle > tri)); --at)
+            listed[at] = listed[at - 1];
+          listed[at] = {d2, tri};
+        }
+      }
+      for (int i = 0; i < count; ++i) chunk.near.push_back(listed[i].triangle);
+      chunk.near[header + 1] = static_cast<int>(chunk.near.size() - header - 2);
+    }
+    lists.nearEnd = static_cast<int>(chunk.near.size());
+    // Per element in the shell: its nearest group centre there.
+    int farCount = 0;
+    for (int k = around.shellBegin; k < around.shellEnd; ++k) {
+      const Group& group = groups_[candidates_[k]];
+      if (group.element == self) continue;
+      const double d2 = lengthSquared(x - group.centre);
+      if (d2 >= farReach2) continue;
+      int e = 0;
+      while (e < farCount && far[e].element != group.element) ++e;
+      if (e == farCount) {
+        if (farCount == kElements) continue;
+        far[farCount++] = {group.element, d2, group.centre};
+      } else if (d2 < far[e].d2) {
+        far[e].d2 = d2, far[e].centre = group.centre;
+      }
+    }
+    for (int e = 0; e < farCount; ++e) chunk.far.push_back({far[e].centre, far[e].element});
+    lists.farEnd = static_cast<int>(chunk.far.size());
+  }
+}
+
+void SpacetimeNeighbours::gather(int v, const std::vector<Vec3>& positions, Hits& hits) const {
+  const Vec3 x = positions[v];
+  const double reach2 = layout_.cellSize * layout_.cellSize;
+  const double shellReach2 = layout_.shellReach * layout_.shellReach;
+  const Chunk& chunk = chunks_[v / kChunk];
+  const VertexLists& lists = lists_[v];
+  for (int k = lists.nearBegin; k < lists.nearEnd;) {
+    const int element = chunk.near[k], count = chunk.near[k + 1];
+    const int* triangles = &chunk.near[k + 2];
+    k += 2 + count;
+    double best = reach2;
+    Vec3 nearest;
+    for (int i = 0; i < count; ++i) {
+      const auto& c = layout_.triangles[triangles[i]];
+      const Vec3 a = positions[c[0]], b = positions[c[1]], d = positions[c[2]];
+      if (distanceSquared(triangleBox(a, b, d), x) >= best) continue;
+      const Vec3 q = closestPointOnTriangle(x, a, b, d);
+      if (const double d2 = lengthSquared(q - x); d2 < best) best = d2, nearest = q;
+    }
+    if (best < reach2) hits.offer({element, best, nearest, true});
+  }
+  for (int k = lists.farBegin; k < lists.farEnd; ++k) {
+    const Far& far = chunk.far[k];
+    const double d2 = lengthSquared(x - far.centre);
+    if (d2 >= shellReach2) continue;
+    if (const int known = hits.find(far.element); known >= 0 && hits[known].exact) continue;
+    hits.offer({far.element, d2, far.centre, false});
+  }
+}
+
+}  // namespace pak

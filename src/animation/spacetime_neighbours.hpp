@@ -1,0 +1,97 @@
+#pragma once
+// Who is near each skin vertex of the spacetime simulation (thesis 5.5.1): the closest point
+// of every other element's envelope within the repulsion reach (exact), and for an element
+// farther off, the centre of its envelope triangles in the outer shell of the 5 × 5 × 5 block
+// of grid cells around the vertex (approximate).
+//
+// Vertices move at most a velocity cap per step, so the search is not redone every step.
+// `rebuild` finds, from a grid of the envelope, each skin vertex's candidate triangles: those
+// of each element within `margin` (a distance) of being its nearest, and within reach plus the
+// margin. While no vertex has moved more than half the margin since, the nearest triangle
+// of every element within reach is among them, so `gather` is exact from the lists alone.
+// The shell centres are kept from the rebuild. `stale` says when to rebuild.
+//
+// Everything depends only on the positions given to `rebuild` (the origin) and to `gather`,
+// so a checkpoint that keeps the origin resumes bit-identically. Work is split in fixed
+// chunks of vertices, each with its own buffers: results do not depend on the thread count,
+// and once the buffers have grown no step allocates.
+#include <array>
+#include <vector>
+
+#include "pak/geom/box3.hpp"
+#include "pak/geom/vec3.hpp"
+#include "sim/nearest_hits.hpp"
+#include "sim/parallel.hpp"
+
+namespace pak {
+
+class SpacetimeNeighbours {
+ public:
+  // The nearest point of another element: exact (on an envelope triangle) or approximate
+  // (a shell centre); any exact hit is nearer than an approximate one.
+  struct Hit {
+    int element; double d2; Vec3 point; bool exact;
+    int key() const { return element; }
+    bool nearerThan(const Hit& other) const {
+      return (exact && !other.exact) || (exact == other.exact && d2 < other.d2);
+    }
+  };
+  static constexpr int kMaxHits = 16;
+  using Hits = NearestHitList<Hit, kMaxHits>;
+
+  struct Layout {
+    std::vector<std::array<int, 3>> triangles;  // envelope triangles (vertex indices)
+    std::vector<int> triangleElement;
+    std::vector<int> vertexElement;             // per vertex
+    std::vector<std::uint8_t> isSkin;           // per vertex: only skin vertices query
+    Box3 area;                                  // the grid's extent (x, y, t)
+    double cellSize = 40.0;                     // grid cell = exact reach
+    double shellReach = 100.0;                  // approximate hits up to this far
+    double margin = 4.0;                        // see above
+  };
+  SpacetimeNeighbours(Layout layout, ThreadPool& pool);
+
+  // Candidate lists from `origin` (copied: the lists' positions).
+  void rebuild(const std::vector<Vec3>& origin);
+  // Whether some vertex has moved more than half the margin from the origin.
+  bool stale(const std::vector<Vec3>& positions) const;
+  // The hits of skin vertex v at x = positions[v] (triangle corners read from `positions`).
+  void gather(int v, const std::vector<Vec3>& positions, Hits& hits) const;
+
+  const std::vector<Vec3>& origin() const { return origin_; }
+  std::size_t triangleCount() const { return layout_.triangles.size(); }
+
+ private:
+  struct Group { int element, begin, end; Vec3 centre; Box3 box; };  // one element's triangles in one cell
+  struct CellCandidates { int begin = 0, end = 0, shellBegin = 0, shellEnd = 0; };
+  struct Far { Vec3 centre; int element; };
+  // A vertex's lists: `near` holds runs [element, count, triangle…], `far` one centre per element.
+  struct VertexLists { int nearBegin = 0, nearEnd = 0, farBegin = 0, farEnd = 0; };
+  struct Chunk { std::vector<int> near; std::vector<Far> far; };
+  static constexpr int kChunk = 512;  // vertices per chunk
+
+  int cellOf(Vec3 p) const;
+  void buildGrid();
+  void buildCandidates();
+  void buildLists(int chunk);
+
+  Layout layout_;
+  ThreadPool& pool_;
+  std::vector<Vec3> origin_;
+  int nx_ = 0, ny_ = 0, nt_ = 0;
+  Vec3 gridOrigin_;
+  // Grid of the envelope at the origin.
+  std::vector<Vec3> centroid_;
+  std::vector<Box3> triangleBox_;
+  std::vector<int> triangleCell_, cellStart_, cellTriangles_, cellGroupStart_;
+  std::vector<Group> groups_;
+  // Per cell holding a skin vertex: the groups within reach of the margin, then those of the
+  // outer shell.
+  std::vector<int> vertexCell_, queriedCells_, candidates_;
+  std::vector<CellCandidates> candidatesOf_;
+  // The lists.
+  std::vector<VertexLists> lists_;
+  std::vector<Chunk> chunks_;
+};
+
+}  // namespace pak
