@@ -51,7 +51,26 @@ Packing animationFrame(const AnimatedPacking& animation, double t) {
         for (Vec2& p : sub.points) p = artPoints[k++];
     }
     scaleAboutCentre(placed, separation);  // frame separation (separateAnimation)
+    placed.leavesContainer = element.leavesContainer;
     packing.elements.push_back(std::move(placed));
+  }
+  // An element whose loop moves it is also where it was one loop ago and will be one loop on
+  // (a bird leaving on the right is entering on the left). The copies come after the
+  // elements, so indices into AnimatedPacking::elements stay those of the frame.
+  const std::size_t count = packing.elements.size();
+  for (std::size_t e = 0; e < count; ++e) {
+    const Vec2 shift = animation.elements[e].loopShift;
+    if (shift.x == 0.0 && shift.y == 0.0) continue;
+    for (const double side : {-1.0, 1.0}) {
+      PlacedElement copy = packing.elements[e];
+      const Vec2 by = shift * side;
+      for (Vec2& p : copy.skin) p += by;
+      for (Vec2& p : copy.meshVertices) p += by;
+      for (Shape& shape : copy.art)
+        for (Subpath& sub : shape.subpaths)
+          for (Vec2& p : sub.points) p += by;
+      packing.elements.push_back(std::move(copy));
+    }
   }
   const double containerArea = area(animation.container) * animation.canonicalScale * animation.canonicalScale;
   packing.skinFill = containerArea > 0.0 ? skinArea / containerArea : 0.0;

@@ -89,6 +89,51 @@ GuidePose guidePose(const std::vector<GuideTarget>& targets, const CanonicalFram
 
 Vec2 rotate(Vec2 p, double angle) { return rotated(p, angle); }
 
+// The spec a guided element loops to (itself unless `loop_to` names another).
+const AnimatedElementSpec& loopPartner(const AnimationScript& script, const AnimatedElementSpec& spec) {
+  if (!spec.loopTo.empty())
+    for (const AnimatedElementSpec& other : script.elements)
+      if (other.id == spec.loopTo) return other;
+  return spec;
+}
+
+// A guided element's loop joins its t = 1 slice to the t = 0 slice of the element it loops to:
+// what separates its last target from that one's first is the loop's shift (input units).
+// Zero for unguided elements and for loops that come back to where they started.
+Vec2 loopShift(const AnimatedElementSpec& spec, const AnimatedElementSpec& partner) {
+  if (spec.targets.empty() || partner.targets.empty()) return {};
+  return spec.targets.back().position - partner.targets.front().position;
+}
+
+// Guided elements stay in the container unless they may leave it; one that travels (its loop
+// moves it, AnimatedElement::loopShift) must move far enough that its copies one shift away
+// never enter the container, which the simulation does not see.
+void checkGuidedPaths(const AnimationRun& run) {
+  const AnimationScript& script = run.script;
+  const Box box = bounds(run.scene.container);
+  for (std::size_t i = 0; i < script.elements.size(); ++i) {
+    const AnimatedElementSpec& spec = script.elements[i];
+    if (spec.targets.empty()) continue;
+    const std::string at = "elements[" + std::to_string(i) + "]";
+    if (!spec.leavesContainer)
+      for (std::size_t k = 0; k < spec.targets.size(); ++k)
+        if (!pointInRegion(spec.targets[k].position, run.scene.container))
+          throw InputError(script.source, at + ".targets[" + std::to_string(k) +
+                                              "]: lies outside the container; a guided element may leave it only "
+                                              "with \"leaves_container\": true");
+    if (!script.loop) continue;
+    const Vec2 shift = loopShift(spec, loopPartner(script, spec));
+    if (shift.x == 0.0 && shift.y == 0.0) continue;
+    if (!spec.leavesContainer)
+      throw InputError(script.source, at + ".targets: the loop moves the element (its last target is not where it "
+                                           "starts); only an element with \"leaves_container\": true may travel");
+    const double reach = 2.0 * run.types[i].radius / run.setup.frame.scale;  // its diameter, input units
+    if (std::abs(shift.x) < box.width() + reach && std::abs(shift.y) < box.height() + reach)
+      throw InputError(script.source, at + ".targets: the loop moves the element by less than the container's extent "
+                                           "and its diameter, so its copy one loop away would enter the container");
+  }
+}
+
 }  // namespace
 
 AnimationRun prepareAnimation(const Scene& scene, const Library& library, const AnimationScript& script,
@@ -154,6 +199,7 @@ AnimationRun prepareAnimation(const Scene& scene, const Library& library, const 
       throw InputError(art.source, std::string("element '") + type.spec->id + "': " + error.what());
     }
   }
+  checkGuidedPaths(run);
   return run;
 }
 
@@ -277,6 +323,7 @@ SpacetimeSimulation spacetimeSimulation(const AnimationRun& run, const Animation
     setup.initialGrowth = seeding.growth;
     setup.torsionStrength = type.spec->orientation ? options.simulation.torsionStrength : 0.0;
     setup.targets = instance.targets;
+    setup.leavesContainer = type.spec->leavesContainer;
     sim.addElement(setup);
   }
   if (script.loop) {
@@ -299,10 +346,18 @@ SpacetimeSimulation spacetimeSimulation(const AnimationRun& run, const Animation
       const int n = static_cast<int>(run.meshes[type.mesh].mesh.mesh.vertices.size());
       sim.addLoop(static_cast<int>(e), to,
                   SpacetimeSimulation::loopTurn(instances[to].reference.data(),
-                                                instances[e].reference.data() + (slices - 1) * n, n));
+                                                instances[e].reference.data() + (slices - 1) * n, n),
+                  loopShift(*type.spec, *toType.spec) * run.setup.frame.scale);
     }
   }
-  sim.finalize(Box{{0.0, 0.0}, {kCanonicalSide, kCanonicalSide}});
+  // The grid covers the container, and the path of any element that leaves it.
+  Box area{{0.0, 0.0}, {kCanonicalSide, kCanonicalSide}};
+  for (const AnimatedInstance& instance : instances)
+    if (types[instance.type].spec->leavesContainer) {
+      const double margin = types[instance.type].radius * options.spacetime.maxGrowth;
+      for (Vec2 p : instance.reference) area.add(Box{p - Vec2{margin, margin}, p + Vec2{margin, margin}});
+    }
+  sim.finalize(area);
   if (resumeFrom) {
     if (resumeFrom->positions.size() != sim.vertexCount() || resumeFrom->growth.size() != sim.growth().size() ||
         resumeFrom->previousGrowth.size() != sim.growth().size() ||
@@ -383,6 +438,8 @@ AnimatedPacking collectAnimation(const AnimationRun& run, const AnimationSeeding
     out.source = type.source;
     out.copy = seeding.instances[e].copy;
     out.guided = !type.spec->targets.empty();
+    out.leavesContainer = type.spec->leavesContainer;
+    if (run.script.loop) out.loopShift = loopShift(*type.spec, loopPartner(run.script, *type.spec));
     out.mesh = shared.mesh;
     out.art = shared.art;
     out.restSkinArea = shared.mesh.skinArea;

@@ -36,6 +36,10 @@ struct SpacetimeElementSetup {
   double torsionStrength = 0.0;         // > 0: slices keep the reference's orientation (k_tor)
   struct Target { int slice; int vertex; Vec2 position; };
   std::vector<Target> targets;          // target-point springs (guided elements, 5.4)
+  // No boundary force: the element may leave the container (a travelling bird, Fig. 5.17). A
+  // slice partly outside does not grow by the common rule, only up to the guided floor
+  // (SpacetimeParameters::guidedGrowth), and counts as touching the wall.
+  bool leavesContainer = false;
 };
 
 class SpacetimeSimulation {
@@ -49,12 +53,15 @@ class SpacetimeSimulation {
   // thesis moves corresponding vertices to their mean; here the slices must agree up to the
   // scripted turn and scale between them, `turn` = (s cos θ, s sin θ) (see loopTurn), so a star
   // that turns by 72° over the loop is joined to itself without being squeezed. With no turn,
-  // (1, 0), this is the thesis's rule exactly.
-  void addLoop(int from, int to, Vec2 turn);
+  // (1, 0), this is the thesis's rule exactly. `shift` (canonical x, y): the last slice joins
+  // the first one moved by it, so an element can leave on one side and come back on the other
+  // (a composition that tiles).
+  void addLoop(int from, int to, Vec2 turn, Vec2 shift = {});
   // The similarity (s cos θ, s sin θ) that best maps the centred points `first` onto `last`.
   static Vec2 loopTurn(const Vec2* first, const Vec2* last, int count);
   // Moves every vertex left outside the container onto its boundary, a hair inside (the
-  // boundary force is a penalty, so pressed vertices rest slightly outside). Returns how many.
+  // boundary force is a penalty, so pressed vertices rest slightly outside), except those of
+  // elements that may leave the container. Returns how many.
   int projectInside();
   // Builds the spring tables, the envelope and the grid over `area` (canonical x, y).
   void finalize(const Box& area);
@@ -96,6 +103,7 @@ class SpacetimeSimulation {
     int vertexBegin, verticesPerSlice, sliceBegin;
     double torsionStrength;
     bool guided;  // has target points
+    bool leavesContainer;
   };
   struct EnvelopeGroup { int element, begin, end; Vec3 centre; double radius; };
   // The nearest point of another element: exact (on an envelope triangle) or approximate
@@ -169,7 +177,7 @@ class SpacetimeSimulation {
   Vec3 gridOrigin_;
   int nx_ = 0, ny_ = 0, nt_ = 0;
   // Loops.
-  struct Loop { int from, to; Vec2 turn; };
+  struct Loop { int from, to; Vec2 turn, shift; };
   std::vector<Loop> loops_;
   // Build-time only.
   struct PendingSpring { int a, b; double stiffness; };

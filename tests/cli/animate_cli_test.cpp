@@ -184,6 +184,25 @@ TEST(CliAnimate, TheFixedMoonIsInEveryFrameAndTheStarsKeepClearOfIt) {
         << name << " draws the moon";
 }
 
+TEST(CliAnimate, TheSwallowFliesThroughTheCloudAndOutAndFramesTile) {
+  ScratchFolder dir("cli-animate-travelling");
+  // 9 slices put the 8 frames on slices: the swallow crosses 80 units between two of them,
+  // more than a frame between them follows cleanly after 300 iterations (the example has 50).
+  PakRun run = runPak("animate -c examples/animate/birds/cloud.svg -a examples/animate/birds/flock.json --slices 9 "
+                      "--frames 8 --width 120 --sheet-frames 3 --svg-keyframes 4 -q --max-iterations 300 --svg-frames -o " +
+                      shellQuoted(dir.file("out")) + " --report " + shellQuoted(dir.file("r.json")));
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  const auto report = nlohmann::json::parse(readWholeFile(dir.file("r.json")));
+  EXPECT_EQ(report["frames-with-overlaps"], 0);
+  EXPECT_EQ(report["frames-with-element-outside"], 0);  // the swallow outside the cloud is not "outside"
+  // At t = 0 the swallow sits on the canvas's left edge: it is drawn there, one canvas width
+  // further on (leaving the frame on the right, where the next tile begins) and one back.
+  const std::string first = readWholeFile((dir.path() / "out" / "svg-frames" / "frame-0000.svg").string());
+  std::size_t swallows = 0;
+  for (std::size_t at = first.find("#2c4a86"); at != std::string::npos; at = first.find("#2c4a86", at + 1)) ++swallows;
+  EXPECT_EQ(swallows, 3u);
+}
+
 TEST(CliAnimate, BadInputIsOneLineAndExitCodeTwo) {
   ScratchFolder dir("cli-animate-errors");
   const std::string bad = dir.file("bad.json");

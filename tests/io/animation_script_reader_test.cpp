@@ -229,6 +229,15 @@ TEST(AnimationScriptReader, IdsAndLoops) {
   EXPECT_EQ(swap.elements[1].loopTo, "a");
 }
 
+TEST(AnimationScriptReader, LeavesContainer) {
+  const std::string guided = R"("targets": [{"t": 0, "x": 0, "y": 0}, {"t": 1, "x": 9, "y": 0}])";
+  EXPECT_TRUE(parse(withElement(guided + R"(, "leaves_container": true)")).elements[0].leavesContainer);
+  EXPECT_FALSE(parse(withElement(guided)).elements[0].leavesContainer);
+  EXPECT_ERROR(withElement(guided + R"(, "leaves_container": 1)"), "elements[0].leaves_container: must be true or false");
+  EXPECT_ERROR(withElement(R"("leaves_container": true)"),
+               "elements[0].leaves_container: only a guided element (one with targets) can leave the container");
+}
+
 TEST(AnimationScriptReader, Orientation) {
   EXPECT_EQ(*parse(withElement(R"("orientation": -45.5)")).elements[0].orientation, -45.5);
   EXPECT_FALSE(parse(withElement(R"("orientation": "random")")).elements[0].orientation);

@@ -58,6 +58,10 @@ struct AnimatedElement {
   std::string source;            // its SVG
   int copy = 0;                  // which of the script element's `count` copies
   bool guided = false;
+  bool leavesContainer = false;  // AnimatedElementSpec::leavesContainer
+  // Where its loop takes it (input units): a frame at t shows it also moved by ± this, so a
+  // bird that leaves on the right comes back on the left and frames side by side tile.
+  Vec2 loopShift;
   ElementMesh mesh;              // slice mesh with the art's barycentric bindings
   std::vector<Shape> art;        // the art the bindings replay (paint kept)
   double restSkinArea = 0.0;     // canonical units², at growth 1
@@ -107,8 +111,8 @@ double smallestGuidedGrowthRatio(const AnimatedPacking& animation);
 // frames at `samples` evenly spaced t are separated, and each element's shrinking is eased
 // over `ramp` of t on either side; animationFrame applies the result at any t.
 void separateAnimation(AnimatedPacking& animation, const FrameSeparationOptions& options, int threads = 1);
-// What a frame's check sees: the elements' art outlines, then the fixed art (an obstacle) as
-// one more outline when there is any.
+// What a frame's check sees: the elements' art outlines (of one that may leave the container,
+// its part inside), then the fixed art (an obstacle) as one more outline when there is any.
 std::vector<Region> checkedOutlines(const Packing& frame);
 // One frame's separation, the safety net at t between the samples: each offending element
 // shrinks a step per round until the frame is clean. Returns the smallest scale it gave an
