@@ -321,6 +321,8 @@ SpacetimeSimulation spacetimeSimulation(const AnimationRun& run, const Animation
     setup.reference = instance.reference;
     setup.referenceCentre = instance.centre;
     setup.initialGrowth = seeding.growth;
+    // Torsion toward each slice's reference: the seeded orientation turned by the rotation
+    // track at that slice (instance.reference), so a full turn over the loop stays scripted.
     setup.torsionStrength = type.spec->orientation ? options.simulation.torsionStrength : 0.0;
     setup.targets = instance.targets;
     setup.leavesContainer = type.spec->leavesContainer;

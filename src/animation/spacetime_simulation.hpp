@@ -33,7 +33,9 @@ struct SpacetimeElementSetup {
   std::vector<Vec2> reference;          // slices × mesh vertices
   std::vector<Vec2> referenceCentre;    // one per slice
   double initialGrowth = 0.1;
-  double torsionStrength = 0.0;         // > 0: slices keep the reference's orientation (k_tor)
+  // > 0: each slice keeps its reference's orientation (k_tor), which includes the scripted
+  // rotation at that slice, so an element turns in place as scripted (Fig. 5.16).
+  double torsionStrength = 0.0;
   struct Target { int slice; int vertex; Vec2 position; };
   std::vector<Target> targets;          // target-point springs (guided elements, 5.4)
   // No boundary force: the element may leave the container (a travelling bird, Fig. 5.17). A

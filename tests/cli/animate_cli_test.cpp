@@ -203,6 +203,19 @@ TEST(CliAnimate, TheSwallowFliesThroughTheCloudAndOutAndFramesTile) {
   EXPECT_EQ(swallows, 3u);
 }
 
+TEST(CliAnimate, PenguinsTurnIntoGiraffesInACleanPacking) {
+  ScratchFolder dir("cli-animate-penguins");
+  PakRun run = runPak("animate -c examples/animate/penguins/square.svg -a examples/animate/penguins/turn.json --slices 6 "
+                      "--frames 8 --width 120 --sheet-frames 3 --svg-keyframes 4 -q --max-iterations 300 -o " +
+                      shellQuoted(dir.file("out")) + " --report " + shellQuoted(dir.file("r.json")));
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  const auto report = nlohmann::json::parse(readWholeFile(dir.file("r.json")));
+  EXPECT_EQ(report["elements"], 25);
+  EXPECT_EQ(report["frames-with-overlaps"], 0);
+  EXPECT_EQ(report["frames-with-element-outside"], 0);
+  EXPECT_EQ(report["parameters"]["k-torsion"], 10.0);  // what holds each slice at its scripted turn
+}
+
 TEST(CliAnimate, BadInputIsOneLineAndExitCodeTwo) {
   ScratchFolder dir("cli-animate-errors");
   const std::string bad = dir.file("bad.json");
