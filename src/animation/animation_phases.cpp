@@ -200,6 +200,17 @@ AnimationRun prepareAnimation(const Scene& scene, const Library& library, const 
     }
   }
   checkGuidedPaths(run);
+  // Orientations along the guides (Fig. 5.18): FLOWPAK's field, sampled every 5 canonical units
+  // along the strokes as `pak flow` does (thesis: 0.005 of the canvas).
+  if (std::any_of(script.elements.begin(), script.elements.end(),
+                  [](const AnimatedElementSpec& s) { return s.orientationFromField; })) {
+    if (scene.guides.empty())
+      throw InputError(script.source, "an element's orientation is \"field\", but the container SVG has no direction "
+                                      "guides: draw strokes on a `guides` layer");
+    VectorFieldOptions fieldOptions;
+    fieldOptions.sampleSpacing = 5.0 / run.setup.frame.scale;
+    run.field = buildVectorField(scene.container, scene.guides, fieldOptions);
+  }
   return run;
 }
 
@@ -290,7 +301,15 @@ AnimationSeeding seedAnimation(const AnimationRun& run) {
     AnimatedInstance instance;
     instance.type = unguided[k];
     instance.copy = copies[unguided[k]]++;
-    const double angle = type.spec->orientation ? -radians(*type.spec->orientation) : rng.uniform(0.0, 2.0 * std::numbers::pi);
+    double angle;
+    if (type.spec->orientation) {
+      angle = -radians(*type.spec->orientation);
+    } else if (type.spec->orientationFromField) {  // drawn facing +x: turned to face the field
+      const Vec2 along = run.field->at(frame.toInput(seeds[k]));
+      angle = std::atan2(along.y, along.x);
+    } else {
+      angle = rng.uniform(0.0, 2.0 * std::numbers::pi);
+    }
     for (int s = 0; s < slices; ++s) {
       Vec2 sum;
       for (Vec2 p : type.shapes[s]) {
@@ -323,7 +342,8 @@ SpacetimeSimulation spacetimeSimulation(const AnimationRun& run, const Animation
     setup.initialGrowth = seeding.growth;
     // Torsion toward each slice's reference: the seeded orientation turned by the rotation
     // track at that slice (instance.reference), so a full turn over the loop stays scripted.
-    setup.torsionStrength = type.spec->orientation ? options.simulation.torsionStrength : 0.0;
+    const bool oriented = type.spec->orientation || type.spec->orientationFromField;
+    setup.torsionStrength = oriented ? options.simulation.torsionStrength : 0.0;
     setup.targets = instance.targets;
     setup.leavesContainer = type.spec->leavesContainer;
     sim.addElement(setup);

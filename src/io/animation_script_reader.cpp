@@ -162,13 +162,15 @@ class Reader {
     if (value.contains("orientation")) {
       const Json& orientation = value["orientation"];
       if (orientation.is_string()) {
-        if (orientation.get<std::string>() != "random")
-          fail(path + ".orientation", "must be a number (degrees) or \"random\"");
+        const std::string kind = orientation.get<std::string>();
+        if (kind != "random" && kind != "field")
+          fail(path + ".orientation", "must be a number (degrees), \"random\" or \"field\"");
         spec.orientation = std::nullopt;
+        spec.orientationFromField = kind == "field";
       } else if (orientation.is_number()) {
         spec.orientation = number(orientation, path + ".orientation");
       } else {
-        fail(path + ".orientation", "must be a number (degrees) or \"random\"");
+        fail(path + ".orientation", "must be a number (degrees), \"random\" or \"field\"");
       }
     }
     if (value.contains("targets")) {

@@ -241,8 +241,14 @@ TEST(AnimationScriptReader, LeavesContainer) {
 TEST(AnimationScriptReader, Orientation) {
   EXPECT_EQ(*parse(withElement(R"("orientation": -45.5)")).elements[0].orientation, -45.5);
   EXPECT_FALSE(parse(withElement(R"("orientation": "random")")).elements[0].orientation);
-  EXPECT_ERROR(withElement(R"("orientation": "up")"), "elements[0].orientation: must be a number (degrees) or \"random\"");
-  EXPECT_ERROR(withElement(R"("orientation": true)"), "elements[0].orientation: must be a number (degrees) or \"random\"");
+  EXPECT_FALSE(parse(withElement(R"("orientation": "random")")).elements[0].orientationFromField);
+  const AnimationScript field = parse(withElement(R"("orientation": "field")"));
+  EXPECT_FALSE(field.elements[0].orientation);
+  EXPECT_TRUE(field.elements[0].orientationFromField);
+  EXPECT_ERROR(withElement(R"("orientation": "up")"),
+               "elements[0].orientation: must be a number (degrees), \"random\" or \"field\"");
+  EXPECT_ERROR(withElement(R"("orientation": true)"),
+               "elements[0].orientation: must be a number (degrees), \"random\" or \"field\"");
 }
 
 }  // namespace

@@ -90,6 +90,9 @@ struct AnimatedPacking {
   int threads = 1;
   std::uint64_t seed = 1;
   bool loop = false;             // the script loops: t = 1 is t = 0
+  // AnimationOptions::mirrorX: the elements were packed left of this line, and every frame
+  // shows them reflected across it too (the container is the whole one).
+  std::optional<double> mirrorX;
   std::vector<double> separationTimes;  // ascending t of the frame separation's samples
 };
 
@@ -98,7 +101,8 @@ AnimatedPacking packAnimation(const Scene& scene, const Library& library, const 
                               const AnimationState* resumeFrom = nullptr);
 
 // The packing at time t ∈ [0, 1]: each element's mesh interpolated between the two slices
-// around t and its art replayed on it (thesis 5.6). A static Packing, so every RepulsionPak
+// around t and its art replayed on it (thesis 5.6). After the elements come the copies of
+// travelling ones (AnimatedElement::loopShift), then, with a mirror, every one reflected. A static Packing, so every RepulsionPak
 // output (SVG, PNG, verifyPacking, metrics) works on a frame.
 Packing animationFrame(const AnimatedPacking& animation, double t);
 

@@ -48,6 +48,9 @@ struct AnimatedElementSpec {
   bool leavesContainer = false;
   // Preferred orientation in degrees (torsional force); nullopt: random orientation, no torsion.
   std::optional<double> orientation;
+  // "orientation": "field": each copy faces the direction of the container's vector field
+  // (FLOWPAK's, from the `guides` strokes) at its seed, and torsion keeps it so (Fig. 5.18).
+  bool orientationFromField = false;
 };
 
 struct AnimationScript {
