@@ -11,6 +11,7 @@ namespace pak::cli {
 struct AnimateArguments {
   CommonArguments common{.every = 100};  // -o is the output folder; --every paces --checkpoint
   std::string container, animation, checkpoint, resume, video;
+  std::string mirror;  // x=VALUE, parsed into options.mirrorX
   int frames = 0, width = 480, sheetFrames = 5, svgKeyframes = 60, evennessFrames = 10;
   double pngAt = 0.0;  // t of the --png preview
   bool pngFrames = false, svgFrames = false, noGif = false;

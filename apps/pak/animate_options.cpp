@@ -37,7 +37,12 @@ OptionTable<AnimationOptions> animationOptionTable() {
 }  // namespace
 
 const OptionTable<AnimateArguments>& animateOptions() {
-  static const OptionTable<AnimateArguments> table = mounted(animationOptionTable(), field(&AnimateArguments::options));
+  using A = AnimateArguments;
+  static const OptionTable<A> table =
+      mounted(animationOptionTable(), field(&A::options)) +
+      OptionTable<A>{{"mirror", field(&A::mirror),
+                      "x=VALUE: simulate the part of the container left of the vertical line x = VALUE (input units) "
+                      "and show it reflected across the line too (thesis Fig. 5.18)"}};
   return table;
 }
 

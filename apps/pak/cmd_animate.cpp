@@ -10,6 +10,7 @@
 #include "art_check.hpp"
 #include "command.hpp"
 #include "input_warnings.hpp"
+#include "mirror_option.hpp"
 #include "output_files.hpp"
 #include "run_eta.hpp"
 #include "pak/error.hpp"
@@ -55,6 +56,7 @@ int runAnimate(AnimateArguments& args, const CLI::App& command) {
   const auto start = Clock::now();
   const CommonArguments& common = args.common;
   if (!common.config.empty()) animateOptions().applyConfig(common.config, command, args);
+  if (!args.mirror.empty()) args.options.mirrorX = parseMirror(args.mirror);
   checkOutputOptions(args);
   if (!args.video.empty()) checkVideoTarget(args.video);  // before the simulation, not after it
   if (command.count("--png-at") > 0 && common.png.empty()) throw InputError("--png-at", "needs --png FILE, the preview it times");

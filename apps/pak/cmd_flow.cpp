@@ -8,6 +8,7 @@
 #include "flow_arguments.hpp"
 #include "flow_report.hpp"
 #include "input_warnings.hpp"
+#include "mirror_option.hpp"
 #include "output_files.hpp"
 #include "pak/error.hpp"
 #include "pak/io/atomic_file.hpp"
@@ -20,15 +21,6 @@ namespace {
 
 // --smooth: how far the written Bézier outlines may stray from the bent polygons (canonical units).
 constexpr double kSmoothTolerance = 0.4;
-
-// "x=VALUE" (input units) for --mirror.
-double parseMirror(const std::string& text) {
-  double x = 0.0;
-  char extra = 0;
-  if (std::sscanf(text.c_str(), " x = %lf %c", &x, &extra) != 1 || !std::isfinite(x))
-    throw InputError("--mirror", "expects x=VALUE (the vertical mirror line, input units), got \"" + text + "\"");
-  return x;
-}
 
 int runFlow(FlowArguments& args, const CLI::App& command) {
   using Clock = std::chrono::steady_clock;

@@ -1,12 +1,23 @@
 // packAnimation: AnimationPak's phases in order (animation_phases.hpp).
 #include <chrono>
+#include <cmath>
+#include <sstream>
+#include <string>
 
 #include "animation/animation_phases.hpp"
 #include "animation/frame_separation.hpp"
 #include "pak/animation/animation.hpp"
 #include "pak/error.hpp"
+#include "pak/geom/clipping.hpp"
 
 namespace pak {
+namespace {
+std::string formatted(double x) {
+  std::ostringstream out;
+  out << x;  // 250, not 250.000000
+  return out.str();
+}
+}  // namespace
 
 const char* toString(AnimationStop reason) {
   switch (reason) {
@@ -24,7 +35,18 @@ AnimatedPacking packAnimation(const Scene& scene, const Library& library, const 
                               const AnimationState* resumeFrom) try {
   using Clock = std::chrono::steady_clock;
   const auto started = Clock::now();
-  const AnimationRun run = prepareAnimation(scene, library, script, options);
+  // With a mirror, the packing is simulated on the container's part left of the line.
+  Scene half;
+  if (options.mirrorX) {
+    if (!std::isfinite(*options.mirrorX)) throw InputError("--mirror", "needs a finite x");
+    const Box box = bounds(scene.container);
+    const Vec2 low = box.min - Vec2{1.0, 1.0}, high{*options.mirrorX, box.max.y + 1.0};
+    half = scene;
+    half.container = intersect(scene.container, Region{Polygon{Ring{low, {high.x, low.y}, high, {low.x, high.y}}, {}}});
+    if (area(half.container) <= 0.0)
+      throw InputError("--mirror", "the container has no part left of the line x = " + formatted(*options.mirrorX));
+  }
+  const AnimationRun run = prepareAnimation(options.mirrorX ? half : scene, library, script, options);
   const AnimationSeeding seeding = seedAnimation(run);
   ThreadPool pool(options.run.threads);
   SpacetimeSimulation sim = spacetimeSimulation(run, seeding, pool, resumeFrom);
@@ -32,6 +54,11 @@ AnimatedPacking packAnimation(const Scene& scene, const Library& library, const 
   const AnimationStop stop = simulateAnimation(sim, run, callbacks, resumeFrom);
   AnimatedPacking result = collectAnimation(run, seeding, sim, stop, pool);
   result.loop = script.loop;
+  if (options.mirrorX) {  // the frames show, and are checked over, the whole container
+    result.mirrorX = options.mirrorX;
+    result.container = scene.container;
+    if (!run.setup.fixedPainted.empty()) result.fixedArt = intersect(run.setup.fixedPainted, scene.container, run.setup.clip);
+  }
   const auto separating = Clock::now();
   separateAnimation(result, options.frameSeparation, pool);
   result.separationSeconds = std::chrono::duration<double>(Clock::now() - separating).count();

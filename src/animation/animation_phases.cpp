@@ -89,6 +89,51 @@ GuidePose guidePose(const std::vector<GuideTarget>& targets, const CanonicalFram
 
 Vec2 rotate(Vec2 p, double angle) { return rotated(p, angle); }
 
+// The spec a guided element loops to (itself unless `loop_to` names another).
+const AnimatedElementSpec& loopPartner(const AnimationScript& script, const AnimatedElementSpec& spec) {
+  if (!spec.loopTo.empty())
+    for (const AnimatedElementSpec& other : script.elements)
+      if (other.id == spec.loopTo) return other;
+  return spec;
+}
+
+// A guided element's loop joins its t = 1 slice to the t = 0 slice of the element it loops to:
+// what separates its last target from that one's first is the loop's shift (input units).
+// Zero for unguided elements and for loops that come back to where they started.
+Vec2 loopShift(const AnimatedElementSpec& spec, const AnimatedElementSpec& partner) {
+  if (spec.targets.empty() || partner.targets.empty()) return {};
+  return spec.targets.back().position - partner.targets.front().position;
+}
+
+// Guided elements stay in the container unless they may leave it; one that travels (its loop
+// moves it, AnimatedElement::loopShift) must move far enough that its copies one shift away
+// never enter the container, which the simulation does not see.
+void checkGuidedPaths(const AnimationRun& run) {
+  const AnimationScript& script = run.script;
+  const Box box = bounds(run.scene.container);
+  for (std::size_t i = 0; i < script.elements.size(); ++i) {
+    const AnimatedElementSpec& spec = script.elements[i];
+    if (spec.targets.empty()) continue;
+    const std::string at = "elements[" + std::to_string(i) + "]";
+    if (!spec.leavesContainer)
+      for (std::size_t k = 0; k < spec.targets.size(); ++k)
+        if (!pointInRegion(spec.targets[k].position, run.scene.container))
+          throw InputError(script.source, at + ".targets[" + std::to_string(k) +
+                                              "]: lies outside the container; a guided element may leave it only "
+                                              "with \"leaves_container\": true");
+    if (!script.loop) continue;
+    const Vec2 shift = loopShift(spec, loopPartner(script, spec));
+    if (shift.x == 0.0 && shift.y == 0.0) continue;
+    if (!spec.leavesContainer)
+      throw InputError(script.source, at + ".targets: the loop moves the element (its last target is not where it "
+                                           "starts); only an element with \"leaves_container\": true may travel");
+    const double reach = 2.0 * run.types[i].radius / run.setup.frame.scale;  // its diameter, input units
+    if (std::abs(shift.x) < box.width() + reach && std::abs(shift.y) < box.height() + reach)
+      throw InputError(script.source, at + ".targets: the loop moves the element by less than the container's extent "
+                                           "and its diameter, so its copy one loop away would enter the container");
+  }
+}
+
 }  // namespace
 
 AnimationRun prepareAnimation(const Scene& scene, const Library& library, const AnimationScript& script,
@@ -153,6 +198,18 @@ AnimationRun prepareAnimation(const Scene& scene, const Library& library, const 
     } catch (const InputError& error) {
       throw InputError(art.source, std::string("element '") + type.spec->id + "': " + error.what());
     }
+  }
+  checkGuidedPaths(run);
+  // Orientations along the guides (Fig. 5.18): FLOWPAK's field, sampled every 5 canonical units
+  // along the strokes as `pak flow` does (thesis: 0.005 of the canvas).
+  if (std::any_of(script.elements.begin(), script.elements.end(),
+                  [](const AnimatedElementSpec& s) { return s.orientationFromField; })) {
+    if (scene.guides.empty())
+      throw InputError(script.source, "an element's orientation is \"field\", but the container SVG has no direction "
+                                      "guides: draw strokes on a `guides` layer");
+    VectorFieldOptions fieldOptions;
+    fieldOptions.sampleSpacing = 5.0 / run.setup.frame.scale;
+    run.field = buildVectorField(scene.container, scene.guides, fieldOptions);
   }
   return run;
 }
@@ -244,7 +301,15 @@ AnimationSeeding seedAnimation(const AnimationRun& run) {
     AnimatedInstance instance;
     instance.type = unguided[k];
     instance.copy = copies[unguided[k]]++;
-    const double angle = type.spec->orientation ? -radians(*type.spec->orientation) : rng.uniform(0.0, 2.0 * std::numbers::pi);
+    double angle;
+    if (type.spec->orientation) {
+      angle = -radians(*type.spec->orientation);
+    } else if (type.spec->orientationFromField) {  // drawn facing +x: turned to face the field
+      const Vec2 along = run.field->at(frame.toInput(seeds[k]));
+      angle = std::atan2(along.y, along.x);
+    } else {
+      angle = rng.uniform(0.0, 2.0 * std::numbers::pi);
+    }
     for (int s = 0; s < slices; ++s) {
       Vec2 sum;
       for (Vec2 p : type.shapes[s]) {
@@ -275,8 +340,12 @@ SpacetimeSimulation spacetimeSimulation(const AnimationRun& run, const Animation
     setup.reference = instance.reference;
     setup.referenceCentre = instance.centre;
     setup.initialGrowth = seeding.growth;
-    setup.torsionStrength = type.spec->orientation ? options.simulation.torsionStrength : 0.0;
+    // Torsion toward each slice's reference: the seeded orientation turned by the rotation
+    // track at that slice (instance.reference), so a full turn over the loop stays scripted.
+    const bool oriented = type.spec->orientation || type.spec->orientationFromField;
+    setup.torsionStrength = oriented ? options.simulation.torsionStrength : 0.0;
     setup.targets = instance.targets;
+    setup.leavesContainer = type.spec->leavesContainer;
     sim.addElement(setup);
   }
   if (script.loop) {
@@ -299,10 +368,18 @@ SpacetimeSimulation spacetimeSimulation(const AnimationRun& run, const Animation
       const int n = static_cast<int>(run.meshes[type.mesh].mesh.mesh.vertices.size());
       sim.addLoop(static_cast<int>(e), to,
                   SpacetimeSimulation::loopTurn(instances[to].reference.data(),
-                                                instances[e].reference.data() + (slices - 1) * n, n));
+                                                instances[e].reference.data() + (slices - 1) * n, n),
+                  loopShift(*type.spec, *toType.spec) * run.setup.frame.scale);
     }
   }
-  sim.finalize(Box{{0.0, 0.0}, {kCanonicalSide, kCanonicalSide}});
+  // The grid covers the container, and the path of any element that leaves it.
+  Box area{{0.0, 0.0}, {kCanonicalSide, kCanonicalSide}};
+  for (const AnimatedInstance& instance : instances)
+    if (types[instance.type].spec->leavesContainer) {
+      const double margin = types[instance.type].radius * options.spacetime.maxGrowth;
+      for (Vec2 p : instance.reference) area.add(Box{p - Vec2{margin, margin}, p + Vec2{margin, margin}});
+    }
+  sim.finalize(area);
   if (resumeFrom) {
     if (resumeFrom->positions.size() != sim.vertexCount() || resumeFrom->growth.size() != sim.growth().size() ||
         resumeFrom->previousGrowth.size() != sim.growth().size() ||
@@ -385,6 +462,8 @@ AnimatedPacking collectAnimation(const AnimationRun& run, const AnimationSeeding
     out.source = type.source;
     out.copy = seeding.instances[e].copy;
     out.guided = !type.spec->targets.empty();
+    out.leavesContainer = type.spec->leavesContainer;
+    if (run.script.loop) out.loopShift = loopShift(*type.spec, loopPartner(run.script, *type.spec));
     out.mesh = shared.mesh;
     out.art = shared.art;
     out.restSkinArea = shared.mesh.skinArea;

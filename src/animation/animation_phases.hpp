@@ -6,11 +6,13 @@
 //
 // Each is a function of what the earlier ones made, so a test can run them one by one.
 #include <chrono>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "animation/spacetime_simulation.hpp"
 #include "pak/animation/animation.hpp"
+#include "pak/flow/vector_field.hpp"
 #include "sim/packing_setup.hpp"
 #include "sim/parallel.hpp"
 #include "sim/prepared_element.hpp"
@@ -38,6 +40,9 @@ struct AnimationRun {
   std::vector<AnimatedType> types;      // one per script element
   std::chrono::steady_clock::time_point started;
   Region fixedArt;                      // input: what the fixed elements paint inside the container
+  // FLOWPAK's vector field from the scene's guides (input units), when an element takes its
+  // orientation from it ("orientation": "field").
+  std::optional<VectorField> field;
 };
 
 // Checks the options and the script, sets up the container and prepares the meshes and the

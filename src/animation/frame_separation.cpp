@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "pak/geom/clipping.hpp"
 #include "pak/geom/verify.hpp"
 
 namespace pak {
@@ -46,6 +47,8 @@ double separationScaleAt(const AnimatedPacking& animation, std::size_t e, double
 
 std::vector<Region> checkedOutlines(const Packing& frame) {
   std::vector<Region> outlines = artOutlines(frame);
+  for (std::size_t e = 0; e < frame.elements.size(); ++e)  // outside, it takes no container space
+    if (frame.elements[e].leavesContainer) outlines[e] = intersect(outlines[e], frame.container);
   if (!frame.fixedArt.empty()) outlines.push_back(frame.fixedArt);
   return outlines;
 }

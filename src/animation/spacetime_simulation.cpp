@@ -41,7 +41,8 @@ int SpacetimeSimulation::addElement(const SpacetimeElementSetup& setup) {
   const int element = static_cast<int>(elements_.size());
   const int vertexBegin = static_cast<int>(position_.size());
   const int sliceBegin = static_cast<int>(growth_.size());
-  elements_.push_back({&mesh, vertexBegin, n, sliceBegin, setup.torsionStrength, !setup.targets.empty()});
+  elements_.push_back(
+      {&mesh, vertexBegin, n, sliceBegin, setup.torsionStrength, !setup.targets.empty(), setup.leavesContainer});
 
   const double dt = spacetime_.timeLength / (slices_ - 1);
   for (int s = 0; s < slices_; ++s) {
@@ -92,10 +93,10 @@ int SpacetimeSimulation::addElement(const SpacetimeElementSetup& setup) {
   return element;
 }
 
-void SpacetimeSimulation::addLoop(int from, int to, Vec2 turn) {
+void SpacetimeSimulation::addLoop(int from, int to, Vec2 turn, Vec2 shift) {
   assert(!finalized_ && "loops are added before finalize");
   assert(elements_[from].mesh == elements_[to].mesh && lengthSquared(turn) > 0.0);
-  loops_.push_back({from, to, turn});
+  loops_.push_back({from, to, turn, shift});
 }
 
 Vec2 SpacetimeSimulation::loopTurn(const Vec2* first, const Vec2* last, int count) {
@@ -114,12 +115,16 @@ int SpacetimeSimulation::projectInside() {
   assert(finalized_);
   constexpr double kInsideMargin = 1e-3;  // canonical units
   int moved = 0;
-  for (Vec3& x : position_) {
-    const RegionIndex::Query q = container_.query(spatial(x), true);
-    if (q.inside) continue;
-    const Vec2 p = q.closest + normalized(q.closest - spatial(x)) * kInsideMargin;
-    x.x = p.x, x.y = p.y;
-    ++moved;
+  for (const ElementRecord& e : elements_) {
+    if (e.leavesContainer) continue;
+    const auto begin = position_.begin() + e.vertexBegin;
+    for (auto x = begin; x != begin + static_cast<std::ptrdiff_t>(e.verticesPerSlice) * slices_; ++x) {
+      const RegionIndex::Query q = container_.query(spatial(*x), true);
+      if (q.inside) continue;
+      const Vec2 p = q.closest + normalized(q.closest - spatial(*x)) * kInsideMargin;
+      x->x = p.x, x->y = p.y;
+      ++moved;
+    }
   }
   return moved;
 }
@@ -264,12 +269,14 @@ void SpacetimeSimulation::computeForces(std::size_t begin, std::size_t end) {
     // Eq. 4.5 in (x, y): the container is extruded along t.
     const Vec2 xy = spatial(x);
     RegionIndex::Query q = container_.query(xy, false);
-    if (!q.inside) {
+    if (!q.inside && element.leavesContainer) {
+      gap = 0.0;  // no container space out here: as if against the wall
+    } else if (!q.inside) {
       if (!q.computed) q = container_.query(xy, true);
       const Vec2 pull = forces::boundary(xy, q.closest, P.boundaryStrength);
       f += Vec3{pull.x, pull.y, 0.0};
     }
-    outside_[v] = (!q.inside && q.distance > P.outsideTolerance) ? 1 : 0;
+    outside_[v] = (!q.inside && (element.leavesContainer || q.distance > P.outsideTolerance)) ? 1 : 0;
     if (isBoundary_[v] && q.computed) gap = std::min(gap, q.distance);
     nearestGap_[v] = gap;
 
@@ -336,7 +343,8 @@ void SpacetimeSimulation::applySliceConstraints(std::size_t elementBegin, std::s
 // 5.5.2, constraint 3: the last slice A of `from` and the first slice B of `to` meet. Their
 // centres move to the mean centre; each vertex's offset b from B's centre becomes the mean
 // of b and M⁻¹a (a: the same vertex's offset in A, M: the scripted turn), and A takes M b.
-// With M = identity every vertex pair moves to its mean, the thesis's rule.
+// With M = identity every vertex pair moves to its mean, the thesis's rule. A loop with a
+// shift joins A to B moved by it: A's centre is the mean centre plus the shift.
 void SpacetimeSimulation::applyLoopConstraints() {
   for (const Loop& loop : loops_) {
     const ElementRecord& from = elements_[loop.from];
@@ -347,7 +355,7 @@ void SpacetimeSimulation::applyLoopConstraints() {
     Vec2 ca, cb;
     for (int i = 0; i < n; ++i) ca += spatial(a[i]), cb += spatial(b[i]);
     ca = ca / static_cast<double>(n), cb = cb / static_cast<double>(n);
-    const Vec2 centre = (ca + cb) * 0.5;
+    const Vec2 centre = (ca - loop.shift + cb) * 0.5;
     const Vec2 m = loop.turn;
     const double inv = 1.0 / lengthSquared(m);
     for (int i = 0; i < n; ++i) {
@@ -356,7 +364,7 @@ void SpacetimeSimulation::applyLoopConstraints() {
       const Vec2 joined = (bi + back) * 0.5;
       const Vec2 ahead{m.x * joined.x - m.y * joined.y, m.y * joined.x + m.x * joined.y};  // M b
       b[i].x = centre.x + joined.x, b[i].y = centre.y + joined.y;
-      a[i].x = centre.x + ahead.x, a[i].y = centre.y + ahead.y;
+      a[i].x = centre.x + loop.shift.x + ahead.x, a[i].y = centre.y + loop.shift.y + ahead.y;
     }
   }
 }
@@ -411,8 +419,9 @@ void SpacetimeSimulation::keepGuidedUp() {
     for (const ElementRecord& e : elements_) {
       const int s = e.sliceBegin + k;
       // Behind or level (so the ratio never ends a rounding short of the share), not grown this
-      // step by the common rule, and inside: one growth step.
-      if (e.guided && growth_[s] <= floor && growth_[s] == previousGrowth_[s] && !sliceOutside_[s])
+      // step by the common rule, and inside (or free to be outside): one growth step.
+      if (e.guided && growth_[s] <= floor && growth_[s] == previousGrowth_[s] &&
+          (!sliceOutside_[s] || e.leavesContainer))
         growth_[s] = growthRule_.grown(growth_[s]);
     }
   }

@@ -34,9 +34,15 @@ struct SpacetimeElementSetup {
   std::vector<Vec2> reference;          // slices × mesh vertices
   std::vector<Vec2> referenceCentre;    // one per slice
   double initialGrowth = 0.1;
-  double torsionStrength = 0.0;         // > 0: slices keep the reference's orientation (k_tor)
+  // > 0: each slice keeps its reference's orientation (k_tor), which includes the scripted
+  // rotation at that slice, so an element turns in place as scripted (Fig. 5.16).
+  double torsionStrength = 0.0;
   struct Target { int slice; int vertex; Vec2 position; };
   std::vector<Target> targets;          // target-point springs (guided elements, 5.4)
+  // No boundary force: the element may leave the container (a travelling bird, Fig. 5.17). A
+  // slice partly outside does not grow by the common rule, only up to the guided floor
+  // (SpacetimeParameters::guidedGrowth), and counts as touching the wall.
+  bool leavesContainer = false;
 };
 
 class SpacetimeSimulation {
@@ -50,12 +56,15 @@ class SpacetimeSimulation {
   // thesis moves corresponding vertices to their mean; here the slices must agree up to the
   // scripted turn and scale between them, `turn` = (s cos θ, s sin θ) (see loopTurn), so a star
   // that turns by 72° over the loop is joined to itself without being squeezed. With no turn,
-  // (1, 0), this is the thesis's rule exactly.
-  void addLoop(int from, int to, Vec2 turn);
+  // (1, 0), this is the thesis's rule exactly. `shift` (canonical x, y): the last slice joins
+  // the first one moved by it, so an element can leave on one side and come back on the other
+  // (a composition that tiles).
+  void addLoop(int from, int to, Vec2 turn, Vec2 shift = {});
   // The similarity (s cos θ, s sin θ) that best maps the centred points `first` onto `last`.
   static Vec2 loopTurn(const Vec2* first, const Vec2* last, int count);
   // Moves every vertex left outside the container onto its boundary, a hair inside (the
-  // boundary force is a penalty, so pressed vertices rest slightly outside). Returns how many.
+  // boundary force is a penalty, so pressed vertices rest slightly outside), except those of
+  // elements that may leave the container. Returns how many.
   int projectInside();
   // Builds the spring tables, the envelope and the grid over `area` (canonical x, y).
   void finalize(const Box& area);
@@ -99,6 +108,7 @@ class SpacetimeSimulation {
     int vertexBegin, verticesPerSlice, sliceBegin;
     double torsionStrength;
     bool guided;  // has target points
+    bool leavesContainer;
   };
   void computeReferencePoints(std::size_t begin, std::size_t end);
   bool insideElementAt(int element, Vec3 x) const;
@@ -151,7 +161,7 @@ class SpacetimeSimulation {
   std::optional<SpacetimeNeighbours> neighbours_;
   bool neighboursStale_ = false;
   // Loops.
-  struct Loop { int from, to; Vec2 turn; };
+  struct Loop { int from, to; Vec2 turn, shift; };
   std::vector<Loop> loops_;
   // Build-time only.
   struct PendingSpring { int a, b; double stiffness; };

@@ -133,7 +133,8 @@ class Reader {
   AnimatedElementSpec element(const Json& value, const std::string& path, std::size_t index, const std::string& folder) const {
     requireObject(value, path, "an object");
     checkKeys(value, path,
-              {"id", "svg", "count", "rotation", "scale", "translation", "handles", "orientation", "targets", "loop_to"});
+              {"id", "svg", "count", "rotation", "scale", "translation", "handles", "orientation", "targets", "loop_to",
+               "leaves_container"});
     AnimatedElementSpec spec;
     spec.id = "element-" + std::to_string(index);
     if (value.contains("id")) {
@@ -161,13 +162,15 @@ class Reader {
     if (value.contains("orientation")) {
       const Json& orientation = value["orientation"];
       if (orientation.is_string()) {
-        if (orientation.get<std::string>() != "random")
-          fail(path + ".orientation", "must be a number (degrees) or \"random\"");
+        const std::string kind = orientation.get<std::string>();
+        if (kind != "random" && kind != "field")
+          fail(path + ".orientation", "must be a number (degrees), \"random\" or \"field\"");
         spec.orientation = std::nullopt;
+        spec.orientationFromField = kind == "field";
       } else if (orientation.is_number()) {
         spec.orientation = number(orientation, path + ".orientation");
       } else {
-        fail(path + ".orientation", "must be a number (degrees) or \"random\"");
+        fail(path + ".orientation", "must be a number (degrees), \"random\" or \"field\"");
       }
     }
     if (value.contains("targets")) {
@@ -178,6 +181,12 @@ class Reader {
       spec.loopTo = string(value["loop_to"], path + ".loop_to");
       if (spec.targets.empty()) fail(path + ".loop_to", "only a guided element (one with targets) can loop to another");
       if (spec.loopTo.empty()) fail(path + ".loop_to", "must name an element id");
+    }
+    if (value.contains("leaves_container")) {
+      if (!value["leaves_container"].is_boolean()) fail(path + ".leaves_container", "must be true or false");
+      spec.leavesContainer = value["leaves_container"].get<bool>();
+      if (spec.leavesContainer && spec.targets.empty())
+        fail(path + ".leaves_container", "only a guided element (one with targets) can leave the container");
     }
     return spec;
   }

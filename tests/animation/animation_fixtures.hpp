@@ -40,6 +40,34 @@ inline ElementArt starElement(const std::string& name) {
   return e;
 }
 
+// An arrow pointing +x: no symmetry, so its orientation is plain to measure.
+inline ElementArt arrowElement() {
+  Shape s;
+  s.subpaths = {Subpath{Ring{{5, 38}, {62, 38}, {62, 18}, {95, 50}, {62, 82}, {62, 62}, {5, 62}}, true}};
+  s.fill = Color{40, 120, 200, 1.0};
+  ElementArt e;
+  e.source = e.name = "arrow.svg";
+  e.shapes = {s};
+  e.outline = {Polygon{s.subpaths[0].points, {}}};
+  return e;
+}
+
+// The rotation (radians; y down, so positive turns clockwise on screen) that best maps an
+// element's rest mesh onto slice s of it.
+inline double sliceAngle(const AnimatedElement& e, int s) {
+  const std::vector<Vec2>& rest = e.mesh.mesh.vertices;
+  const std::vector<Vec2>& slice = e.slices[s];
+  Vec2 cr, cs;
+  for (std::size_t v = 0; v < rest.size(); ++v) cr += rest[v], cs += slice[v];
+  cr = cr / static_cast<double>(rest.size()), cs = cs / static_cast<double>(rest.size());
+  double c = 0.0, sn = 0.0;
+  for (std::size_t v = 0; v < rest.size(); ++v) {
+    const Vec2 p = rest[v] - cr, q = slice[v] - cs;
+    c += dot(p, q), sn += cross(p, q);
+  }
+  return std::atan2(sn, c);
+}
+
 inline Scene discScene(double radius = 200.0) {
   Scene scene;
   scene.source = "disc";

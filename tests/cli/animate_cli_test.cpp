@@ -184,6 +184,76 @@ TEST(CliAnimate, TheFixedMoonIsInEveryFrameAndTheStarsKeepClearOfIt) {
         << name << " draws the moon";
 }
 
+TEST(CliAnimate, TheSwallowFliesThroughTheCloudAndOutAndFramesTile) {
+  ScratchFolder dir("cli-animate-travelling");
+  // 9 slices put the 8 frames on slices: the swallow crosses 80 units between two of them,
+  // more than a frame between them follows cleanly after 300 iterations (the example has 50).
+  PakRun run = runPak("animate -c examples/animate/birds/cloud.svg -a examples/animate/birds/flock.json --slices 9 "
+                      "--frames 8 --width 120 --sheet-frames 3 --svg-keyframes 4 -q --max-iterations 300 --svg-frames -o " +
+                      shellQuoted(dir.file("out")) + " --report " + shellQuoted(dir.file("r.json")));
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  const auto report = nlohmann::json::parse(readWholeFile(dir.file("r.json")));
+  EXPECT_EQ(report["frames-with-overlaps"], 0);
+  EXPECT_EQ(report["frames-with-element-outside"], 0);  // the swallow outside the cloud is not "outside"
+  // At t = 0 the swallow sits on the canvas's left edge: it is drawn there, one canvas width
+  // further on (leaving the frame on the right, where the next tile begins) and one back.
+  const std::string first = readWholeFile((dir.path() / "out" / "svg-frames" / "frame-0000.svg").string());
+  std::size_t swallows = 0;
+  for (std::size_t at = first.find("#2c4a86"); at != std::string::npos; at = first.find("#2c4a86", at + 1)) ++swallows;
+  EXPECT_EQ(swallows, 3u);
+}
+
+TEST(CliAnimate, PenguinsTurnIntoGiraffesInACleanPacking) {
+  ScratchFolder dir("cli-animate-penguins");
+  PakRun run = runPak("animate -c examples/animate/penguins/square.svg -a examples/animate/penguins/turn.json --slices 6 "
+                      "--frames 8 --width 120 --sheet-frames 3 --svg-keyframes 4 -q --max-iterations 300 -o " +
+                      shellQuoted(dir.file("out")) + " --report " + shellQuoted(dir.file("r.json")));
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  const auto report = nlohmann::json::parse(readWholeFile(dir.file("r.json")));
+  EXPECT_EQ(report["elements"], 25);
+  EXPECT_EQ(report["frames-with-overlaps"], 0);
+  EXPECT_EQ(report["frames-with-element-outside"], 0);
+  EXPECT_EQ(report["parameters"]["k-torsion"], 10.0);  // what holds each slice at its scripted turn
+}
+
+TEST(CliAnimate, TheMirroredManeIsSymmetricAndCheckedOverBothHalves) {
+  ScratchFolder dir("cli-animate-mirror");
+  PakRun run = runPak("animate -c examples/animate/lion/mane.svg -a examples/animate/lion/mane.json --mirror x=250 "
+                      "--slices 6 --frames 8 --width 120 --sheet-frames 3 --svg-keyframes 4 -q --max-iterations 300 "
+                      "--svg-frames -o " + shellQuoted(dir.file("out")) + " --report " + shellQuoted(dir.file("r.json")));
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  const auto report = nlohmann::json::parse(readWholeFile(dir.file("r.json")));
+  EXPECT_EQ(report["elements"], 16);  // simulated: the left half
+  EXPECT_EQ(report["parameters"]["mirror"], "x=250");
+  EXPECT_EQ(report["frames-with-overlaps"], 0);  // both halves, the face and the twins across the line
+  EXPECT_EQ(report["frames-with-element-outside"], 0);
+  // Each frame draws 32 strands, in mirrored pairs: each strand's x coordinates are 500 − its
+  // twin's, read in reverse.
+  const std::string frame = readWholeFile((dir.path() / "out" / "svg-frames" / "frame-0003.svg").string());
+  std::vector<std::string> strands;  // the `d` of each <path> painted in the strand's colour
+  for (std::size_t at = frame.find("<path"); at != std::string::npos; at = frame.find("<path", at + 1)) {
+    const std::string tag = frame.substr(at, frame.find('>', at) - at);
+    if (tag.find("fill=\"#ee8a26\"") == std::string::npos) continue;
+    const std::size_t d = tag.find(" d=\"") + 4;
+    strands.push_back(tag.substr(d, tag.find('"', d) - d));
+  }
+  ASSERT_EQ(strands.size(), 32u);
+  for (std::size_t e = 0; e < 16; ++e) {
+    const std::vector<double> left = numbersIn(strands[e]), right = numbersIn(strands[16 + e]);
+    ASSERT_EQ(left.size(), right.size()) << e;
+    ASSERT_EQ(left.size() % 2, 0u);
+    const std::size_t points = left.size() / 2;
+    for (std::size_t i = 0; i < points; ++i) {
+      EXPECT_NEAR(right[2 * (points - 1 - i)], 500.0 - left[2 * i], 0.02) << e;
+      EXPECT_NEAR(right[2 * (points - 1 - i) + 1], left[2 * i + 1], 0.02) << e;
+    }
+  }
+  PakRun bad = runPak("animate -c examples/animate/lion/mane.svg -a examples/animate/lion/mane.json --mirror y=3 -o " +
+                      shellQuoted(dir.file("bad")));
+  EXPECT_EQ(bad.exitCode, 2);
+  EXPECT_EQ(bad.err.rfind("pak: error: --mirror: ", 0), 0u) << bad.err;
+}
+
 TEST(CliAnimate, BadInputIsOneLineAndExitCodeTwo) {
   ScratchFolder dir("cli-animate-errors");
   const std::string bad = dir.file("bad.json");

@@ -229,11 +229,26 @@ TEST(AnimationScriptReader, IdsAndLoops) {
   EXPECT_EQ(swap.elements[1].loopTo, "a");
 }
 
+TEST(AnimationScriptReader, LeavesContainer) {
+  const std::string guided = R"("targets": [{"t": 0, "x": 0, "y": 0}, {"t": 1, "x": 9, "y": 0}])";
+  EXPECT_TRUE(parse(withElement(guided + R"(, "leaves_container": true)")).elements[0].leavesContainer);
+  EXPECT_FALSE(parse(withElement(guided)).elements[0].leavesContainer);
+  EXPECT_ERROR(withElement(guided + R"(, "leaves_container": 1)"), "elements[0].leaves_container: must be true or false");
+  EXPECT_ERROR(withElement(R"("leaves_container": true)"),
+               "elements[0].leaves_container: only a guided element (one with targets) can leave the container");
+}
+
 TEST(AnimationScriptReader, Orientation) {
   EXPECT_EQ(*parse(withElement(R"("orientation": -45.5)")).elements[0].orientation, -45.5);
   EXPECT_FALSE(parse(withElement(R"("orientation": "random")")).elements[0].orientation);
-  EXPECT_ERROR(withElement(R"("orientation": "up")"), "elements[0].orientation: must be a number (degrees) or \"random\"");
-  EXPECT_ERROR(withElement(R"("orientation": true)"), "elements[0].orientation: must be a number (degrees) or \"random\"");
+  EXPECT_FALSE(parse(withElement(R"("orientation": "random")")).elements[0].orientationFromField);
+  const AnimationScript field = parse(withElement(R"("orientation": "field")"));
+  EXPECT_FALSE(field.elements[0].orientation);
+  EXPECT_TRUE(field.elements[0].orientationFromField);
+  EXPECT_ERROR(withElement(R"("orientation": "up")"),
+               "elements[0].orientation: must be a number (degrees), \"random\" or \"field\"");
+  EXPECT_ERROR(withElement(R"("orientation": true)"),
+               "elements[0].orientation: must be a number (degrees), \"random\" or \"field\"");
 }
 
 }  // namespace

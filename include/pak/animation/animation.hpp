@@ -61,6 +61,10 @@ struct AnimatedElement {
   std::string source;            // its SVG
   int copy = 0;                  // which of the script element's `count` copies
   bool guided = false;
+  bool leavesContainer = false;  // AnimatedElementSpec::leavesContainer
+  // Where its loop takes it (input units): a frame at t shows it also moved by ± this, so a
+  // bird that leaves on the right comes back on the left and frames side by side tile.
+  Vec2 loopShift;
   ElementMesh mesh;              // slice mesh with the art's barycentric bindings
   std::vector<Shape> art;        // the art the bindings replay (paint kept)
   double restSkinArea = 0.0;     // canonical units², at growth 1
@@ -89,6 +93,9 @@ struct AnimatedPacking {
   int threads = 1;
   std::uint64_t seed = 1;
   bool loop = false;             // the script loops: t = 1 is t = 0
+  // AnimationOptions::mirrorX: the elements were packed left of this line, and every frame
+  // shows them reflected across it too (the container is the whole one).
+  std::optional<double> mirrorX;
   std::vector<double> separationTimes;  // ascending t of the frame separation's samples
 };
 
@@ -97,7 +104,8 @@ AnimatedPacking packAnimation(const Scene& scene, const Library& library, const 
                               const AnimationState* resumeFrom = nullptr);
 
 // The packing at time t ∈ [0, 1]: each element's mesh interpolated between the two slices
-// around t and its art replayed on it (thesis 5.6). A static Packing, so every RepulsionPak
+// around t and its art replayed on it (thesis 5.6). After the elements come the copies of
+// travelling ones (AnimatedElement::loopShift), then, with a mirror, every one reflected. A static Packing, so every RepulsionPak
 // output (SVG, PNG, verifyPacking, metrics) works on a frame.
 Packing animationFrame(const AnimatedPacking& animation, double t);
 
@@ -117,8 +125,8 @@ double meanCentroidAcceleration(const AnimatedPacking& animation, int frames);
 // frames at `samples` evenly spaced t are separated, and each element's shrinking is eased
 // over `ramp` of t on either side; animationFrame applies the result at any t.
 void separateAnimation(AnimatedPacking& animation, const FrameSeparationOptions& options, int threads = 1);
-// What a frame's check sees: the elements' art outlines, then the fixed art (an obstacle) as
-// one more outline when there is any.
+// What a frame's check sees: the elements' art outlines (of one that may leave the container,
+// its part inside), then the fixed art (an obstacle) as one more outline when there is any.
 std::vector<Region> checkedOutlines(const Packing& frame);
 // One frame's separation, the safety net at t between the samples: each offending element
 // shrinks a step per round until the frame is clean. Returns the smallest scale it gave an

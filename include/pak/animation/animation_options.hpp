@@ -1,6 +1,8 @@
 #pragma once
 // What packAnimation takes. Distances are in canonical units (the container's bounding square
 // is 1000 wide), times along the t axis of SpacetimeParameters::timeLength.
+#include <optional>
+
 #include "pak/animation/spacetime_parameters.hpp"
 #include "pak/sim/run_options.hpp"
 #include "pak/sim/simulation_parameters.hpp"
@@ -47,6 +49,9 @@ struct AnimationOptions {
   AnimationStopRule stop;
   FrameSeparationOptions frameSeparation;
   RunOptions run;
+  // Mirror symmetry (thesis Fig. 5.18): simulate the part of the container left of the
+  // vertical line x = mirrorX (input units) and show it reflected across the line as well.
+  std::optional<double> mirrorX;
 };
 
 }  // namespace pak

@@ -42,8 +42,15 @@ struct AnimatedElementSpec {
   // Its t = 1 slice joins the t = 0 slice of the element with this id (a permutation loop,
   // Figure 5.11d); empty: its own t = 0 slice. Only for guided elements (count 1).
   std::string loopTo;
+  // Guided elements only: it may leave the container (thesis Fig. 5.17). Its slices feel no
+  // boundary force, and what lies outside takes no container space: the frame checks count
+  // only its part inside.
+  bool leavesContainer = false;
   // Preferred orientation in degrees (torsional force); nullopt: random orientation, no torsion.
   std::optional<double> orientation;
+  // "orientation": "field": each copy faces the direction of the container's vector field
+  // (FLOWPAK's, from the `guides` strokes) at its seed, and torsion keeps it so (Fig. 5.18).
+  bool orientationFromField = false;
 };
 
 struct AnimationScript {

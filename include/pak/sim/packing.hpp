@@ -25,6 +25,8 @@ struct PlacedElement {
   double maxEdgeStrain = 0.0;  // largest |length / (g × rest length) − 1| over its edge springs
   double meanEdgeStrain = 0.0; // mean of the same over its edge springs
   int container = 0;        // index into Packing::containers: the one it was seeded in
+  // AnimationPak: it may leave the container; only its part inside is checked (checkedOutlines).
+  bool leavesContainer = false;
 };
 
 // TimeLimit: the run ran out of --time-limit (the one stop that depends on the machine).
