@@ -221,9 +221,6 @@ TEST(AnimationPack, BadInputIsAnInputError) {
   EXPECT_THROW(packAnimation(empty, {test::starElement("s")}, test::spinningStars(2)), InputError);
 }
 
-}  // namespace
-}  // namespace pak
-
 TEST(AnimationPack, MeanCentroidAccelerationIsTheCentroidsSecondDifference) {
   // One element circling at radius 10 (input units) over a loop of 8 slices (t = s / 8, the
   // last equal to the first); 2 canonical units per input unit.
@@ -259,3 +256,6 @@ TEST(AnimationPack, MeanCentroidAccelerationIsTheCentroidsSecondDifference) {
   EXPECT_NEAR(meanCentroidAcceleration(a, 17), 0.0, 1e-9);
   EXPECT_EQ(meanCentroidAcceleration(a, 2), 0.0);
 }
+
+}  // namespace
+}  // namespace pak
