@@ -1,18 +1,18 @@
 #!/usr/bin/env bash
 # The time-spring trade-off of thesis Fig. 5.21 (issue 15, item 2): tightness against
 # smoothness over a range of --time-springs, on the stars example (and the chase with
-# ANIMATE_SCENES="stars chase"), seeds 1–3, 100 frames, 2 threads. The edge springs are 40
-# (--k-edge); the thesis's ratio of time to edge springs, 0.01 / 10, is --time-springs 0.04.
+# ANIMATE_SCENES="stars chase"), seeds 1–3, 100 frames, 2 threads. The edge springs are 20
+# (--k-edge); the thesis's ratio of time to edge springs, 0.01 / 10, is --time-springs 0.02.
 # Per run: negative space and P2 (median over 10 frames), the mean centroid acceleration of
 # the unguided elements (canonical units per frame², report `mean-centroid-acceleration`),
 # frames with an overlap, iterations and simulation seconds. Rows go to
 # bench/animate-time-springs-results.csv; a summary (median over seeds) follows.
-#   ANIMATE_SEEDS="1" TIME_SPRINGS="0.04 4" bench/animate-time-springs.sh build/release
+#   ANIMATE_SEEDS="1" TIME_SPRINGS="0.02 4" bench/animate-time-springs.sh build/release
 set -euo pipefail
 source "$(dirname "$0")/common.sh"
 seeds=${ANIMATE_SEEDS:-1 2 3}
 names=${ANIMATE_SCENES:-stars}
-strengths=${TIME_SPRINGS:-0.04 0.4 1 4 10 40}
+strengths=${TIME_SPRINGS:-0.02 0.2 1 4 20}
 csv=bench/animate-time-springs-results.csv
 header="date,commit,scene,seed,time_springs,iterations,stop,neg_median,P2_median,P2_worst,mean_centroid_acceleration,frames_with_overlaps,sim_s"
 declare -A scenes

@@ -14,8 +14,9 @@ namespace pak {
 struct AnimationStopRule {
   double closeness = 6.0;  // every slice is this close to another element or the wall (thesis 0.006 of the container)
   // The slices' mean growth rose by less than this over the last stallWindow iterations (a
-  // slice grows by growthRate × Δt = 0.001 per free iteration).
-  double stallGrowth = 0.005;
+  // slice grows by growthRate × Δt = 0.001 per free iteration). 0.005 stopped the stars a few
+  // hundred iterations early, with pockets still closing (docs/animationpak.md, third round).
+  double stallGrowth = 0.002;
   int stallWindow = 100;
   int maxIterations = 3000;
   double timeLimit = 0.0;  // seconds of wall time from the start of the run; 0: none
@@ -42,9 +43,10 @@ struct AnimationOptions {
   double gap = 0.08;              // d_gap as a fraction of the nominal element size (thesis 0.08)
   double meshSpacing = 0.0;       // slice mesh spacing, canonical units; 0: nominal size / 4
   double initialScale = 0.1;      // elements start shrunk to this (thesis 5–10 %), or less to fit
-  // RepulsionPak's forces, but the grid cell is the exact repulsion reach (5.5.1) and k_tor
-  // acts on the elements with a preferred orientation only.
-  SimulationParameters simulation{.torsionStrength = 10.0, .cellSize = 40.0};
+  // RepulsionPak's forces, but the grid cell is the exact repulsion reach (5.5.1), k_tor acts on
+  // the elements with a preferred orientation only, and the edge springs are half the thesis's
+  // 40, as in `pak pack`: softer slices fill the pockets (docs/animationpak.md, third round).
+  SimulationParameters simulation{.edgeStrength = 20.0, .torsionStrength = 10.0, .cellSize = 40.0};
   SpacetimeParameters spacetime;
   AnimationStopRule stop;
   FrameSeparationOptions frameSeparation;
