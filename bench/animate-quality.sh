@@ -8,6 +8,8 @@
 # bench/animate-quality-results.csv; a summary per scene and frame count follows.
 #   ANIMATE_SEEDS="1 2" bench/animate-quality.sh build/release   # fewer seeds
 #   ANIMATE_SCENES="stars" …                                      # one example
+#   ANIMATE_RENDER_ONLY=1 …   # resume both from an earlier run's checkpoints: the frames again
+#                             # (after a change to what follows the simulation), sim_s ≈ 0
 set -euo pipefail
 source "$(dirname "$0")/common.sh"
 seeds=${ANIMATE_SEEDS:-1 2 3 4 5}
@@ -37,8 +39,10 @@ for name in $names; do
   for seed in $seeds; do
     out="$work/animate-quality-$name-s$seed"
     # shellcheck disable=SC2086
+    simulate=(--checkpoint "$out.checkpoint" --every 50)
+    [ -n "${ANIMATE_RENDER_ONLY:-}" ] && simulate=(--resume "$out.checkpoint")
     "$pak" animate ${scenes[$name]} --seed "$seed" --threads 2 --frames 100 -o "$out-f100" --no-gif \
-      --checkpoint "$out.checkpoint" --every 50 --report "$out-f100.json" --quiet
+      "${simulate[@]}" --report "$out-f100.json" --quiet
     line="$stamp,$commit,$(row "$out-f100.json" "$name" "$seed" 100)"
     echo "$line" | tee -a "$csv"
     rows+=("$line")
