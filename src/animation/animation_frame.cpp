@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "animation/frame_separation.hpp"
+#include "animation/slice_bracket.hpp"
 #include "pak/animation/animation.hpp"
 
 namespace pak {
@@ -18,12 +19,7 @@ Packing animationFrame(const AnimatedPacking& animation, double t) {
   double skinArea = 0.0;
   for (std::size_t e = 0; e < animation.elements.size(); ++e) {
     const AnimatedElement& element = animation.elements[e];
-    const std::vector<double>& times = element.sliceTimes;
-    const int last = static_cast<int>(times.size()) - 1;
-    int s = static_cast<int>(std::upper_bound(times.begin(), times.end(), t) - times.begin()) - 1;
-    s = std::clamp(s, 0, last - 1);
-    const double span = times[s + 1] - times[s];
-    const double w = span > 0.0 ? std::clamp((t - times[s]) / span, 0.0, 1.0) : 0.0;
+    const auto [s, w] = sliceBracket(element.sliceTimes, t);
     const std::vector<Vec2>& a = element.slices[s];
     const std::vector<Vec2>& b = element.slices[s + 1];
     vertices.resize(a.size());

@@ -1,8 +1,8 @@
 // How calmly the elements move (thesis Fig. 5.21): weak time springs buy a tighter packing
 // with frantic motion. Measured as the centroid's acceleration from frame to frame.
-#include <algorithm>
 #include <cmath>
 
+#include "animation/slice_bracket.hpp"
 #include "pak/animation/animation.hpp"
 
 namespace pak {
@@ -10,12 +10,7 @@ namespace pak {
 namespace {
 // The mean of an element's mesh vertices at t, interpolated between its slices as a frame is.
 Vec2 centroidAt(const AnimatedElement& element, double t) {
-  const std::vector<double>& times = element.sliceTimes;
-  const int last = static_cast<int>(times.size()) - 1;
-  int s = static_cast<int>(std::upper_bound(times.begin(), times.end(), t) - times.begin()) - 1;
-  s = std::clamp(s, 0, last - 1);
-  const double span = times[s + 1] - times[s];
-  const double w = span > 0.0 ? std::clamp((t - times[s]) / span, 0.0, 1.0) : 0.0;
+  const auto [s, w] = sliceBracket(element.sliceTimes, t);
   Vec2 a, b;
   for (Vec2 p : element.slices[s]) a += p;
   for (Vec2 p : element.slices[s + 1]) b += p;
