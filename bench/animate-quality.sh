@@ -56,14 +56,11 @@ for name in $names; do
 done
 echo
 echo "summary (median over seeds; worst in brackets; counts are worst):"
-printf '%s\n' "${rows[@]}" | python3 -c '
-import statistics, sys
-groups = {}
-for line in sys.stdin:
-    f = line.strip().split(",")
-    groups.setdefault((f[2], f[4]), []).append(f)
-for (scene, frames), rs in groups.items():
-    col = lambda i: [float(r[i]) for r in rs]
+printf '%s\n' "${rows[@]}" | PYTHONPATH="$(dirname "$0")" python3 -c '
+import statistics
+from rows import grouped, column
+for (scene, frames), rs in grouped():
+    col = lambda i: column(rs, i)
     print(f"{scene} {frames} frames, {len(rs)} seeds: overlaps {max(col(7)):.0f}, outside {max(col(8)):.0f}, "
           f"self-crossing {max(col(9)):.0f}, negative space {statistics.median(col(12)):.3f} ({max(col(12)):.3f}), "
           f"P2 {statistics.median(col(13)):.3f} ({max(col(14)):.3f}), guided {min(col(15)):.3f} (smallest), "

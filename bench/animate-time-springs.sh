@@ -44,14 +44,11 @@ PY
 done
 echo
 echo "summary (median over seeds):"
-printf '%s\n' "${rows[@]}" | python3 -c '
-import statistics, sys
-groups = {}
-for line in sys.stdin:
-    f = line.strip().split(",")
-    groups.setdefault((f[2], f[4]), []).append(f)
-for (scene, k), rs in groups.items():
-    med = lambda i: statistics.median(float(r[i]) for r in rs)
+printf '%s\n' "${rows[@]}" | PYTHONPATH="$(dirname "$0")" python3 -c '
+import statistics
+from rows import grouped, column
+for (scene, k), rs in grouped():
+    med = lambda i: statistics.median(column(rs, i))
     print(f"{scene} --time-springs {k}, {len(rs)} seeds: negative space {med(7):.3f}, P2 {med(8):.3f}, "
           f"centroid acceleration {med(10):.4f}, iterations {med(5):.0f}, simulation {med(12):.1f} s")
 '

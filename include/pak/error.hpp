@@ -3,6 +3,7 @@
 // an element id or an --option) and *what* is wrong, apart; what() is "<where>: <what>". The
 // CLI prints "pak: error: <where>: <what>" and exits with code 2. Programmer mistakes are
 // assertions instead.
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -24,6 +25,13 @@ class InputError : public std::runtime_error {
 // packer knows no file, the packer knows its scene's.
 inline InputError attributed(const InputError& error, const std::string& where) {
   return error.where().empty() && !where.empty() ? InputError(where, error.problem()) : error;
+}
+
+// A number for a message, as a person would write it: 250, not 250.000000; 6 significant digits.
+inline std::string messageNumber(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", value);
+  return text;
 }
 
 }  // namespace pak

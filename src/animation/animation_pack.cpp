@@ -1,7 +1,6 @@
 // packAnimation: AnimationPak's phases in order (animation_phases.hpp).
 #include <chrono>
 #include <cmath>
-#include <sstream>
 #include <string>
 
 #include "animation/animation_phases.hpp"
@@ -11,13 +10,6 @@
 #include "pak/geom/clipping.hpp"
 
 namespace pak {
-namespace {
-std::string formatted(double x) {
-  std::ostringstream out;
-  out << x;  // 250, not 250.000000
-  return out.str();
-}
-}  // namespace
 
 const char* toString(AnimationStop reason) {
   switch (reason) {
@@ -44,7 +36,7 @@ AnimatedPacking packAnimation(const Scene& scene, const Library& library, const 
     half = scene;
     half.container = intersect(scene.container, Region{Polygon{Ring{low, {high.x, low.y}, high, {low.x, high.y}}, {}}});
     if (area(half.container) <= 0.0)
-      throw InputError("--mirror", "the container has no part left of the line x = " + formatted(*options.mirrorX));
+      throw InputError("--mirror", "the container has no part left of the line x = " + messageNumber(*options.mirrorX));
   }
   const AnimationRun run = prepareAnimation(options.mirrorX ? half : scene, library, script, options);
   const AnimationSeeding seeding = seedAnimation(run);

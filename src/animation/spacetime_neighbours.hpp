@@ -45,9 +45,10 @@ class SpacetimeNeighbours {
     std::vector<int> vertexElement;             // per vertex
     std::vector<std::uint8_t> isSkin;           // per vertex: only skin vertices query
     Box3 area;                                  // the grid's extent (x, y, t)
-    double cellSize = 40.0;                     // grid cell = exact reach
-    double shellReach = 100.0;                  // approximate hits up to this far
-    double margin = 4.0;                        // see above
+    // Set by the caller, which owns these constants (SpacetimeSimulation::finalize).
+    double cellSize = 0.0;                      // grid cell = exact reach
+    double shellReach = 0.0;                    // approximate hits up to this far
+    double margin = 0.0;                        // see above
   };
   SpacetimeNeighbours(Layout layout, ThreadPool& pool);
 

@@ -431,7 +431,7 @@ void SpacetimeSimulation::step() {
   assert(finalized_ && "step only after finalize");
   const std::size_t nv = position_.size(), ns = growth_.size();
   pool_.parallelFor(nv, 2048, [&](std::size_t b, std::size_t e) { computeReferencePoints(b, e); });
-  if (neighboursStale_) neighbours_->rebuild(position_);
+  if (neighbours_->stale(position_)) neighbours_->rebuild(position_);
   pool_.parallelFor(nv, 256, [&](std::size_t b, std::size_t e) { computeForces(b, e); });
   pool_.parallelFor(nv, 4096, [&](std::size_t b, std::size_t e) { integrate(b, e); });
   pool_.parallelFor(elements_.size(), 1, [&](std::size_t b, std::size_t e) { applySliceConstraints(b, e); });
@@ -453,7 +453,6 @@ void SpacetimeSimulation::step() {
   largestSliceGap_ = largestGap;
   growingSlices_ = growing;
   overlappingSlices_ = overlapping;
-  neighboursStale_ = neighbours_->stale(position_);
   ++iteration_;
   assert(allFinite(position_.data(), position_.data() + position_.size()) && "a step left a non-finite position");
 }
@@ -479,7 +478,6 @@ void SpacetimeSimulation::restoreState(int iteration, std::vector<Vec3> position
   computeSliceCentres();
   // The lists the uninterrupted run would have now: built where it built them.
   neighbours_->rebuild(neighbourOrigin);
-  neighboursStale_ = neighbours_->stale(position_);
 }
 
 void SpacetimeSimulation::computeSliceCentres() {

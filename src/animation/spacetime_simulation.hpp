@@ -159,7 +159,6 @@ class SpacetimeSimulation {
   std::vector<std::array<int, 3>> envelope_;
   std::vector<int> envelopeElement_;
   std::optional<SpacetimeNeighbours> neighbours_;
-  bool neighboursStale_ = false;
   // Loops.
   struct Loop { int from, to; Vec2 turn, shift; };
   std::vector<Loop> loops_;

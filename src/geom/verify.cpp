@@ -3,22 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
-#include <sstream>
 
+#include "pak/error.hpp"
 #include "pak/geom/clipping.hpp"
 #include "pak/geom/segment_crossing.hpp"
 
 namespace pak {
-namespace {
-
-std::string describe(double value) {
-  std::ostringstream s;
-  s.precision(6);
-  s << value;
-  return s.str();
-}
-
-}  // namespace
 
 MeshCheck verifyMesh(const TriMesh& mesh, double minArea) {
   MeshCheck check;
@@ -48,9 +38,9 @@ MeshCheck verifyMesh(const TriMesh& mesh, double minArea) {
     }
     const double a = triangleSignedArea(mesh.vertices[tri[0]], mesh.vertices[tri[1]], mesh.vertices[tri[2]]);
     if (a < 0.0)
-      fail(name + " is inverted (area " + describe(a) + ")");
+      fail(name + " is inverted (area " + messageNumber(a) + ")");
     else if (!(a > minArea))  // also catches a NaN area
-      fail(name + " has zero area (area " + describe(a) + ", minimum " + describe(minArea) + ")");
+      fail(name + " has zero area (area " + messageNumber(a) + ", minimum " + messageNumber(minArea) + ")");
   }
   return check;
 }
@@ -91,7 +81,7 @@ PackingCheck verifyPacking(const std::vector<Region>& elements, const Region& co
     check.offending.push_back(o.b);
     ++check.overlappingPairs;
     check.problems.push_back("elements " + std::to_string(o.a) + " and " + std::to_string(o.b) + " overlap by " +
-                             describe(o.area));
+                             messageNumber(o.area));
   }
 
   for (std::size_t e = 0; e < elements.size(); ++e) {
@@ -102,7 +92,7 @@ PackingCheck verifyPacking(const std::vector<Region>& elements, const Region& co
       ++check.elementsOutside;
       check.outsideArea += outside;
       check.problems.push_back("element " + std::to_string(e) + " lies outside the container (or in a hole) by " +
-                               describe(outside) + " of its area " + describe(area(elements[e])));
+                               messageNumber(outside) + " of its area " + messageNumber(area(elements[e])));
     }
   }
   std::sort(check.offending.begin(), check.offending.end());
