@@ -41,6 +41,9 @@ void checkOptions(const AnimationOptions& o, int slices) {
   nonNegative(p.targetStrength, "--target");
   nonNegative(p.temporalStrength, "--temporal");
   positive(p.maxGrowth, "--max-growth");
+  nonNegative(p.growthSpread, "--growth-spread");
+  nonNegative(p.guidedGrowth, "--guided-growth");
+  nonNegative(p.guidedWallGive, "--guided-wall-give");
   positive(p.timeLength, "--time-length");
   positive(o.stop.closeness, "--closeness");
   nonNegative(o.stop.stallGrowth, "--stall-growth");

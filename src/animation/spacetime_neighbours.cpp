@@ -29,6 +29,10 @@ struct BlockOffsets {
 };
 const BlockOffsets kBlock;
 
+// Distances computed at the origin and now may differ in their last bits; a lower bound is
+// lowered by this much (canonical units) to stay one.
+constexpr double kRoundingSlack = 1e-9;
+
 Box3 triangleBox(Vec3 a, Vec3 b, Vec3 c) {
   Box3 box;
   box.add(a), box.add(b), box.add(c);
@@ -199,6 +203,7 @@ void SpacetimeNeighbours::buildCandidates() {
 void SpacetimeNeighbours::buildLists(int chunkIndex) {
   Chunk& chunk = chunks_[chunkIndex];
   chunk.near.clear();
+  chunk.reach.clear();
   chunk.far.clear();
   const double reach = layout_.cellSize, margin = layout_.margin;
   const double listReach = reach + margin;
@@ -227,6 +232,7 @@ void SpacetimeNeighbours::buildLists(int chunkIndex) {
     const CellCandidates& around = candidatesOf_[vertexCell_[v]];
     // Each element's nearest distance (capped at the list reach), groups nearest cells first.
     int elements = 0;
+    chunk.passing.clear();
     for (int k = around.begin; k < around.end; ++k) {
       const Group& group = groups_[candidates_[k]];
       if (group.element == self) continue;
@@ -238,6 +244,7 @@ void SpacetimeNeighbours::buildLists(int chunkIndex) {
         if (elements == kElements) continue;
         near[elements++] = {group.element, listReach * listReach};
       }
+      chunk.passing.push_back({candidates_[k], e, bound2});
       double& best2 = near[e].best2;
       if (bound2 >= best2) continue;
       for (int j = group.begin; j < group.end; ++j) {
@@ -254,10 +261,11 @@ void SpacetimeNeighbours::buildLists(int chunkIndex) {
       const std::size_t header = chunk.near.size();
       chunk.near.push_back(near[e].element);
       chunk.near.push_back(0);  // the count, below
+      chunk.reach.insert(chunk.reach.end(), 2, 0.0);
       int count = 0;
-      for (int k = around.begin; k < around.end; ++k) {
-        const Group& group = groups_[candidates_[k]];
-        if (group.element != near[e].element || distanceSquared(group.box, x) > limit2) continue;
+      for (const Passing& passing : chunk.passing) {
+        if (passing.slot != e || passing.bound2 > limit2) continue;
+        const Group& group = groups_[passing.group];
         for (int j = group.begin; j < group.end; ++j) {
           const int tri = cellTriangles_[j];
           if (distanceSquared(triangleBox_[tri], x) > limit2) continue;
@@ -266,6 +274,7 @@ void SpacetimeNeighbours::buildLists(int chunkIndex) {
           if (d2 > limit2) continue;
           if (count == kListed) {  // beyond the sorted ones (not seen in practice): still listed
             chunk.near.push_back(tri);
+            chunk.reach.push_back(0.0);
             continue;
           }
           // Nearest first (ties by triangle), so that gather prunes early.
@@ -275,7 +284,11 @@ void SpacetimeNeighbours::buildLists(int chunkIndex) {
           listed[at] = {d2, tri};
         }
       }
-      for (int i = 0; i < count; ++i) chunk.near.push_back(listed[i].triangle);
+      // Nearest first after any overflow (reach 0), so gather stops at the first entry out of reach.
+      for (int i = 0; i < count; ++i) {
+        chunk.near.push_back(listed[i].triangle);
+        chunk.reach.push_back(std::max(0.0, std::sqrt(listed[i].d2) - margin - kRoundingSlack));
+      }
       chunk.near[header + 1] = static_cast<int>(chunk.near.size() - header - 2);
     }
     lists.nearEnd = static_cast<int>(chunk.near.size());
@@ -309,10 +322,12 @@ void SpacetimeNeighbours::gather(int v, const std::vector<Vec3>& positions, Hits
   for (int k = lists.nearBegin; k < lists.nearEnd;) {
     const int element = chunk.near[k], count = chunk.near[k + 1];
     const int* triangles = &chunk.near[k + 2];
+    const double* lowerBound = &chunk.reach[k + 2];
     k += 2 + count;
     double best = reach2;
     Vec3 nearest;
     for (int i = 0; i < count; ++i) {
+      if (lowerBound[i] * lowerBound[i] >= best) break;  // this and the rest cannot be nearer
       const auto& c = layout_.triangles[triangles[i]];
       const Vec3 a = positions[c[0]], b = positions[c[1]], d = positions[c[2]];
       if (distanceSquared(triangleBox(a, b, d), x) >= best) continue;

@@ -137,7 +137,7 @@ void SpacetimeSimulation::finalize(const Box& area) {
   force_.assign(nv, {});
   referencePoint_.assign(nv, {});
   insideOther_.assign(nv, 0);
-  outside_.assign(nv, 0);
+  outsideDepth_.assign(nv, 0.0);
   nearestGap_.assign(nv, kFar);
   targetPull_.assign(nv, {kNoTarget, kNoTarget});
   for (const auto& target : pendingTargets_) targetPull_[target.vertex] = target.position;
@@ -169,6 +169,7 @@ void SpacetimeSimulation::finalize(const Box& area) {
   sliceOverlapping_.assign(ns, 0);
   sliceOutside_.assign(ns, 0);
   sliceGap_.assign(ns, kFar);
+  sliceOutsideDepth_.assign(ns, 0.0);
   sliceArea_.assign(ns, 0.0);
   previousGrowth_.assign(ns, 0.0);
   unguidedGrowth_.assign(elements_.size(), 0.0);
@@ -276,7 +277,7 @@ void SpacetimeSimulation::computeForces(std::size_t begin, std::size_t end) {
       const Vec2 pull = forces::boundary(xy, q.closest, P.boundaryStrength);
       f += Vec3{pull.x, pull.y, 0.0};
     }
-    outside_[v] = (!q.inside && (element.leavesContainer || q.distance > P.outsideTolerance)) ? 1 : 0;
+    outsideDepth_[v] = q.inside ? 0.0 : q.computed ? q.distance : kFar;
     if (isBoundary_[v] && q.computed) gap = std::min(gap, q.distance);
     nearestGap_[v] = gap;
 
@@ -375,14 +376,16 @@ void SpacetimeSimulation::updateSlices(std::size_t begin, std::size_t end) {
     const ElementRecord& element = elements_[sliceElement_[s]];
     const int base = sliceVertexBegin_[s], n = element.verticesPerSlice, nb = element.mesh->boundaryCount;
     Vec2 centre;
-    bool overlapping = false, outside = false;
-    double gap = kFar;
+    bool overlapping = false;
+    double gap = kFar, depth = 0.0;
     for (int v = base; v < base + n; ++v) {
       centre += spatial(position_[v]);
       overlapping = overlapping || insideOther_[v];
-      outside = outside || outside_[v];
+      depth = std::max(depth, outsideDepth_[v]);
       gap = std::min(gap, nearestGap_[v]);
     }
+    // Out at all, for one that may leave (no container space out there); past the tolerance else.
+    const bool outside = depth > (element.leavesContainer ? 0.0 : parameters_.outsideTolerance);
     sliceCentre_[s] = centre / static_cast<double>(n);
     double doubledArea = 0.0;
     for (int k = 0; k < nb; ++k) {
@@ -392,6 +395,7 @@ void SpacetimeSimulation::updateSlices(std::size_t begin, std::size_t end) {
     sliceArea_[s] = 0.5 * doubledArea;
     sliceOverlapping_[s] = overlapping ? 1 : 0;
     sliceOutside_[s] = outside ? 1 : 0;
+    sliceOutsideDepth_[s] = depth;
     sliceGap_[s] = gap;
     const double grown = growthRule_.grown(growth_[s]);
     bool smooth = true;
@@ -419,9 +423,10 @@ void SpacetimeSimulation::keepGuidedUp() {
     for (const ElementRecord& e : elements_) {
       const int s = e.sliceBegin + k;
       // Behind or level (so the ratio never ends a rounding short of the share), not grown this
-      // step by the common rule, and inside (or free to be outside): one growth step.
+      // step by the common rule, and inside, pressed no further than the give past the wall, or
+      // free to be outside: one growth step.
       if (e.guided && growth_[s] <= floor && growth_[s] == previousGrowth_[s] &&
-          (!sliceOutside_[s] || e.leavesContainer))
+          (e.leavesContainer || sliceOutsideDepth_[s] <= spacetime_.guidedWallGive))
         growth_[s] = growthRule_.grown(growth_[s]);
     }
   }

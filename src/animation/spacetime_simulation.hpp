@@ -140,7 +140,8 @@ class SpacetimeSimulation {
   std::vector<Vec3> position_, velocity_, force_, referencePoint_;
   std::vector<Vec2> reference_;            // at growth 1
   std::vector<int> sliceOf_;               // global slice index
-  std::vector<std::uint8_t> isBoundary_, insideOther_, outside_;
+  std::vector<std::uint8_t> isBoundary_, insideOther_;
+  std::vector<double> outsideDepth_;  // how far past the wall (0: inside; kFar: out where an element may leave)
   std::vector<double> nearestGap_;         // distance to the nearest other element or wall
   std::vector<Vec2> targetPull_;           // target-point spring anchor, per vertex (NaN: none)
   // Springs by vertex (each spring appears at both ends).
@@ -154,7 +155,7 @@ class SpacetimeSimulation {
   std::vector<double> unguidedGrowth_;  // scratch for keepGuidedUp, one per element
   std::vector<Vec2> referenceCentre_, sliceCentre_;
   std::vector<std::uint8_t> sliceOverlapping_, sliceOutside_;
-  std::vector<double> sliceGap_, sliceArea_;
+  std::vector<double> sliceGap_, sliceArea_, sliceOutsideDepth_;
   // Envelope triangles (5.5.1), until finalize hands them to the neighbour search.
   std::vector<std::array<int, 3>> envelope_;
   std::vector<int> envelopeElement_;

@@ -219,6 +219,14 @@ TEST(AnimationPack, BadInputIsAnInputError) {
   EXPECT_THROW(packAnimation(test::discScene(), {test::starElement("s"), test::starElement("s")}, unguidedLoop), InputError);
   Scene empty;
   EXPECT_THROW(packAnimation(empty, {test::starElement("s")}, test::spinningStars(2)), InputError);
+  // The growth shares and the wall's give are distances or ratios: never negative.
+  for (double SpacetimeParameters::*field :
+       {&SpacetimeParameters::growthSpread, &SpacetimeParameters::guidedGrowth, &SpacetimeParameters::guidedWallGive}) {
+    AnimationOptions negative;
+    negative.spacetime.*field = -1.0;
+    EXPECT_THROW(packAnimation(test::discScene(), {test::starElement("star.svg")}, test::spinningStars(2), negative),
+                 InputError);
+  }
 }
 
 TEST(AnimationPack, MeanCentroidAccelerationIsTheCentroidsSecondDifference) {
