@@ -6,10 +6,12 @@
 //
 // Vertices move at most a velocity cap per step, so the search is not redone every step.
 // `rebuild` finds, from a grid of the envelope, each skin vertex's candidate triangles: those
-// of each element within `margin` (a distance) of being its nearest, and within reach plus the
-// margin. While no vertex has moved more than half the margin since, the nearest triangle
-// of every element within reach is among them, so `gather` is exact from the lists alone.
-// The shell centres are kept from the rebuild. `stale` says when to rebuild.
+// of each element within twice `margin` (a distance) of its nearest, and within reach plus the
+// margin, nearest first. While no vertex has moved more than half the margin since, a vertex
+// and a triangle come closer by at most the margin, so the nearest triangle of every element
+// within reach is among them: `gather` is exact from the lists alone, and stops at the first
+// listed triangle whose distance at the rebuild, less the margin, is no nearer than the best
+// found. The shell centres are kept from the rebuild. `stale` says when to rebuild.
 //
 // Everything depends only on the positions given to `rebuild` (the origin) and to `gather`,
 // so a checkpoint that keeps the origin resumes bit-identically. Work is split in fixed
