@@ -113,12 +113,16 @@ int runAnimate(AnimateArguments& args, const CLI::App& command) {
   auto frameTime = [&](int i, int count) {
     return script.loop ? static_cast<double>(i) / count : (count > 1 ? static_cast<double>(i) / (count - 1) : 0.0);
   };
-  // packAnimation separated the frames at its samples; a frame between them that still
-  // overlaps is separated on its own (`scale`: the smallest scale that gave an element).
-  // `check`, when given, gets the frame's verifyPacking if the separation made it.
+  // packAnimation separated the frames at its samples (an eased scale per element over t); a
+  // frame that still overlaps is separated on its own. `scale`: the smallest scale the two
+  // together gave an element. `check`, when given, gets the frame's verifyPacking if the
+  // separation made it.
   auto frameAt = [&](double t, double& scale, std::optional<PackingCheck>* check = nullptr) {
     Packing frame = animationFrame(animation, t);
-    scale = separateFrame(frame, options.frameSeparation, nullptr, check);
+    std::vector<double> own;
+    separateFrame(frame, options.frameSeparation, &own, check);
+    scale = 1.0;
+    for (std::size_t e = 0; e < own.size(); ++e) scale = std::min(scale, separationScaleAt(animation, e, t) * own[e]);
     return frame;
   };
   auto drawingAt = [&](double t) {

@@ -7,9 +7,6 @@ namespace pak {
 
 // Scales the placed element (mesh, skin, art and strokes) about its skin's centre.
 void scaleAboutCentre(PlacedElement& element, double factor);
-// Element e's separation scale at t, interpolated between the animation's separation samples
-// (1 when it has none).
-double separationScaleAt(const AnimatedPacking& animation, std::size_t e, double t);
 // separateAnimation on the caller's pool (packAnimation's, once the simulation is done).
 void separateAnimation(AnimatedPacking& animation, const FrameSeparationOptions& options, ThreadPool& pool);
 

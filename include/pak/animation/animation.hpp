@@ -135,5 +135,8 @@ std::vector<Region> checkedOutlines(const Packing& frame);
 // one (it did unless rounds = 0 or the rounds ran out), so a caller need not check it again.
 double separateFrame(Packing& frame, const FrameSeparationOptions& options, std::vector<double>* scales = nullptr,
                      std::optional<PackingCheck>* check = nullptr);
+// Element e's scale at t from the animation's separation (eased between its samples; 1 when
+// it has none): animationFrame applies it, and a frame's own separation comes on top.
+double separationScaleAt(const AnimatedPacking& animation, std::size_t e, double t);
 
 }  // namespace pak
