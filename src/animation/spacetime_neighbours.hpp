@@ -70,10 +70,10 @@ class SpacetimeNeighbours {
   struct Far { Vec3 centre; int element; };
   // A vertex's lists: `near` holds runs [element, count, triangle…], `far` one centre per element.
   struct VertexLists { int nearBegin = 0, nearEnd = 0, farBegin = 0, farEnd = 0; };
-  // `reach[k]`, beside each listed triangle near[k], is its distance at the origin less the
-  // margin: a lower bound on its distance until the lists are stale (0 beside the headers).
   // A group of another element that comes within the list reach of the vertex being listed.
   struct Passing { int group, slot; double bound2; };
+  // `reach[k]`, beside each listed triangle near[k], is its distance at the origin less the
+  // margin: a lower bound on its distance until the lists are stale (0 beside the headers).
   struct Chunk {
     std::vector<int> near; std::vector<double> reach; std::vector<Far> far;
     std::vector<Passing> passing;  // scratch for one vertex at a time

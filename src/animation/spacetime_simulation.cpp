@@ -167,7 +167,6 @@ void SpacetimeSimulation::finalize(const Box& area) {
   const std::size_t ns = growth_.size();
   sliceCentre_.assign(ns, {});
   sliceOverlapping_.assign(ns, 0);
-  sliceOutside_.assign(ns, 0);
   sliceGap_.assign(ns, kFar);
   sliceOutsideDepth_.assign(ns, 0.0);
   sliceArea_.assign(ns, 0.0);
@@ -370,7 +369,14 @@ void SpacetimeSimulation::applyLoopConstraints() {
   }
 }
 
-// Per slice: centre, area, overlap and wall flags, nearest gap; then growth (5.5.3).
+// Out at all, for an element that may leave (no container space out there); else pressed past
+// the tolerance.
+bool SpacetimeSimulation::sliceOutside(std::size_t s) const {
+  const double tolerance = elements_[sliceElement_[s]].leavesContainer ? 0.0 : parameters_.outsideTolerance;
+  return sliceOutsideDepth_[s] > tolerance;
+}
+
+// Per slice: centre, area, overlap flag, depth past the wall, nearest gap; then growth (5.5.3).
 void SpacetimeSimulation::updateSlices(std::size_t begin, std::size_t end) {
   for (std::size_t s = begin; s < end; ++s) {
     const ElementRecord& element = elements_[sliceElement_[s]];
@@ -384,8 +390,6 @@ void SpacetimeSimulation::updateSlices(std::size_t begin, std::size_t end) {
       depth = std::max(depth, outsideDepth_[v]);
       gap = std::min(gap, nearestGap_[v]);
     }
-    // Out at all, for one that may leave (no container space out there); past the tolerance else.
-    const bool outside = depth > (element.leavesContainer ? 0.0 : parameters_.outsideTolerance);
     sliceCentre_[s] = centre / static_cast<double>(n);
     double doubledArea = 0.0;
     for (int k = 0; k < nb; ++k) {
@@ -394,7 +398,6 @@ void SpacetimeSimulation::updateSlices(std::size_t begin, std::size_t end) {
     }
     sliceArea_[s] = 0.5 * doubledArea;
     sliceOverlapping_[s] = overlapping ? 1 : 0;
-    sliceOutside_[s] = outside ? 1 : 0;
     sliceOutsideDepth_[s] = depth;
     sliceGap_[s] = gap;
     const double grown = growthRule_.grown(growth_[s]);
@@ -405,7 +408,7 @@ void SpacetimeSimulation::updateSlices(std::size_t begin, std::size_t end) {
       if (k > first) smooth = smooth && grown <= previousGrowth_[k - 1] + spacetime_.growthSpread;
       if (k < last) smooth = smooth && grown <= previousGrowth_[k + 1] + spacetime_.growthSpread;
     }
-    if (!overlapping && !outside && smooth) growth_[s] = grown;
+    if (!overlapping && !sliceOutside(s) && smooth) growth_[s] = grown;
   }
 }
 
@@ -451,7 +454,7 @@ void SpacetimeSimulation::step() {
   for (std::size_t s = 0; s < ns; ++s) {
     area += sliceArea_[s];
     largestGap = std::max(largestGap, sliceGap_[s]);
-    growing += (!sliceOverlapping_[s] && !sliceOutside_[s] && growthRule_.belowCap(growth_[s])) ? 1 : 0;
+    growing += (!sliceOverlapping_[s] && !sliceOutside(s) && growthRule_.belowCap(growth_[s])) ? 1 : 0;
     overlapping += sliceOverlapping_[s];
   }
   fill_ = ns > 0 ? area / (containerArea_ * slices_) : 0.0;

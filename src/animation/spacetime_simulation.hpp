@@ -121,6 +121,7 @@ class SpacetimeSimulation {
   // SpacetimeParameters::guidedGrowth: after the common growth rule, a guided slice below the
   // share of its slice index's median unguided g grows a step regardless of contacts.
   void keepGuidedUp();
+  bool sliceOutside(std::size_t s) const;
 
   const RegionIndex& container_;
   double containerArea_;
@@ -154,7 +155,7 @@ class SpacetimeSimulation {
   std::vector<double> growth_, previousGrowth_, sliceTime_, restTime_;
   std::vector<double> unguidedGrowth_;  // scratch for keepGuidedUp, one per element
   std::vector<Vec2> referenceCentre_, sliceCentre_;
-  std::vector<std::uint8_t> sliceOverlapping_, sliceOutside_;
+  std::vector<std::uint8_t> sliceOverlapping_;
   std::vector<double> sliceGap_, sliceArea_, sliceOutsideDepth_;
   // Envelope triangles (5.5.1), until finalize hands them to the neighbour search.
   std::vector<std::array<int, 3>> envelope_;
