@@ -66,14 +66,14 @@ int runFlow(FlowArguments& args, const CLI::App& command) {
   writeSvgFile(drawing, common.output, svgOptions);
   writePngPreview(drawing, common.png, common.pngWidth);
 
-  const PackingCheck check = auditFlowPacking(packing);
+  const PackingCheck check = auditFlowPacking(packing, library);
   const double wall = std::chrono::duration<double>(Clock::now() - start).count();
   if (!common.quiet)
     std::fprintf(stderr,
                  "pak flow: %zu elements (%zu gap shapes), %zu streamlines, %d refinement iterations, element area "
-                 "%.3f of the free space, %d overlapping pairs, %d outside, %.1f s\n",
+                 "%.3f of the free space, %d overlapping pairs, %d outside, %d folded, %.1f s\n",
                  packing.elements.size(), packing.gapElements.size(), packing.streamlines.size(), packing.iterations,
-                 flowFill(packing), check.overlappingPairs, check.elementsOutside, wall);
+                 flowFill(packing), check.overlappingPairs, check.elementsOutside, check.selfIntersecting, wall);
   if (!common.report.empty()) writeFileAtomically(common.report, flowReport(args, packing, check, wall).dump(2) + "\n");
   return 0;
 }

@@ -2,15 +2,23 @@
 
 #include "art_check.hpp"
 #include "report_fields.hpp"
+#include "pak/sim/packing.hpp"
 
 namespace pak::cli {
 
-PackingCheck auditFlowPacking(const FlowPacking& packing) {
+PackingCheck auditFlowPacking(const FlowPacking& packing, const Library& library) {
   std::vector<Region> outlines;
+  // Folds: a bent element's art rings that cross themselves where the drawn ones do not.
+  std::vector<std::vector<Ring>> rings, rest;
   for (const auto* list : {&packing.elements, &packing.gapElements})
-    for (const FlowElement& e : *list) outlines.push_back(e.outline);
+    for (const FlowElement& e : *list) {
+      outlines.push_back(e.outline);
+      rings.push_back(artRings(e.art));
+      const bool drawn = e.libraryIndex >= 0 && e.libraryIndex < static_cast<int>(library.size());
+      rest.push_back(drawn ? artRings(library[static_cast<std::size_t>(e.libraryIndex)].shapes) : std::vector<Ring>{});
+    }
   if (!packing.fixedArt.empty()) outlines.push_back(packing.fixedArt);
-  return checkArt(outlines, packing.container, {});  // FLOWPAK's fold check is issue 16's
+  return checkArt(outlines, packing.container, rings, rest);
 }
 
 nlohmann::json flowReport(const FlowArguments& args, const FlowPacking& packing, const PackingCheck& check,

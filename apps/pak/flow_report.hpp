@@ -7,8 +7,9 @@
 
 namespace pak::cli {
 
-// The result's invariants, on the art as drawn; fixed elements count as one more element.
-PackingCheck auditFlowPacking(const FlowPacking& packing);
+// The result's invariants, on the art as drawn (fixed elements count as one more element),
+// and the bent elements that fold: `library` is the one packFlow was given.
+PackingCheck auditFlowPacking(const FlowPacking& packing, const Library& library);
 
 nlohmann::json flowReport(const FlowArguments& args, const FlowPacking& packing, const PackingCheck& check,
                           double wallSeconds);

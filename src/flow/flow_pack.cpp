@@ -15,6 +15,7 @@
 #include "pak/geom/clipping.hpp"
 #include "pak/geom/closest_point.hpp"
 #include "pak/geom/resample.hpp"
+#include "pak/geom/verify.hpp"
 #include "sim/packing_setup.hpp"
 
 namespace pak {
@@ -296,6 +297,19 @@ Region FlowPacker::placementSpace(std::size_t i, const Region& blob) const {
   return subtract(space, othersNear(i, box, true));
 }
 
+namespace {
+// Whether a ring of the bent outline crosses itself where the same ring as drawn does not.
+bool foldsOverItself(const Region& bent, const Region& drawn) {
+  if (bent.size() != drawn.size()) return false;
+  for (std::size_t k = 0; k < bent.size(); ++k) {
+    if (ringSelfIntersects(bent[k].outer) && !ringSelfIntersects(drawn[k].outer)) return true;
+    for (std::size_t h = 0; h < bent[k].holes.size() && h < drawn[k].holes.size(); ++h)
+      if (ringSelfIntersects(bent[k].holes[h]) && !ringSelfIntersects(drawn[k].holes[h])) return true;
+  }
+  return false;
+}
+}  // namespace
+
 // Thesis 3.3.5: the element and reflection whose LR function is closest to the blob's
 // (eq. 3.1), rotations ±1…max° too during refinement, bent along the streamline and made as
 // wide as fits.
@@ -332,11 +346,15 @@ Placement FlowPacker::place(const FlowElement& e, const Region& spaceAll, const 
   const double maxEdge = extent / 100.0;
   frame.widthScale = fitWidthScale(p.outline, frame, spine, space, maxEdge, kMaxWidthOverLengthScale * lengthScale);
   if (!(frame.widthScale > 0.0)) return best;
+  Region outline = bendRegion(p.outline, frame, spine, maxEdge);
+  // A turn sharper than the element is wide folds it over itself (thesis 3.5): no placement
+  // here (narrowing it instead fills no more: docs/flowpak.md).
+  if (!options_.keepFolds && foldsOverItself(outline, p.outline)) return best;
   best.ok = true;
   best.type = type;
   best.frame = frame;
   best.streamline = spine;
-  best.outline = bendRegion(p.outline, frame, spine, maxEdge);
+  best.outline = std::move(outline);
   best.area = area(best.outline);
   return best;
 }

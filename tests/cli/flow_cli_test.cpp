@@ -24,6 +24,7 @@ TEST(CliFlow, KoiIsPackedWithoutOverlapsAndReported) {
   EXPECT_GE(report["element-count"].get<int>(), 8);
   EXPECT_EQ(report["overlap-count"], 0);
   EXPECT_EQ(report["elements-outside"], 0);
+  EXPECT_EQ(report["self-intersecting-outlines"], 0) << report["problems"];
   EXPECT_EQ(report["iterations"], 2);
   auto areas = report["element-area-per-iteration"];
   ASSERT_EQ(areas.size(), 3u);

@@ -146,6 +146,34 @@ TEST(FlowPack, FixedElementsAndFixedSpinesAreRespected) {
   EXPECT_EQ(onSpine, 1);
 }
 
+// A fixed spine with a hairpin turn tighter than the lens is wide: bent along it, the lens
+// folds over itself. Pak refuses that placement unless asked to keep folds (the thesis).
+TEST(FlowPack, AnElementIsNotPlacedWhereItWouldFoldOverItself) {
+  Scene scene = rectangleScene();
+  Polyline hairpin;
+  for (int i = 0; i <= 8; ++i) hairpin.push_back({60.0 + 10.0 * i, 40.0});
+  for (int i = 1; i < 12; ++i) {
+    const double a = -M_PI / 2 + M_PI * i / 12;
+    hairpin.push_back(Vec2{140, 46} + Vec2{6 * std::cos(a), 6 * std::sin(a)});
+  }
+  for (int i = 8; i >= 0; --i) hairpin.push_back({60.0 + 10.0 * i, 52.0});
+  scene.spines.push_back(hairpin);
+  auto folded = [](const FlowPacking& p) {
+    int n = 0;
+    for (const FlowElement& e : p.elements)
+      for (const Polygon& polygon : e.outline) n += ringSelfIntersects(polygon.outer) ? 1 : 0;
+    return n;
+  };
+  FlowOptions o = quickOptions();
+  o.keepFolds = true;
+  const FlowPacking kept = packFlow(scene, Library{lens()}, o);
+  EXPECT_GE(folded(kept), 1) << "the test's hairpin no longer folds the lens";
+  o.keepFolds = false;
+  const FlowPacking refused = packFlow(scene, Library{lens()}, o);
+  EXPECT_EQ(folded(refused), 0);
+  expectValidPacking(refused);
+}
+
 TEST(FlowPack, MirrorReflectsTheLeftHalf) {
   FlowOptions o = quickOptions();
   o.mirrorX = 200.0;
