@@ -42,7 +42,8 @@ const OptionTable<AnimateArguments>& animateOptions() {
   static const OptionTable<A> table =
       mounted(animationOptionTable(), field(&A::options)) +
       OptionTable<A>{{"mirror", field(&A::mirror),
-                      "x=VALUE: simulate the part of the container left of the vertical line x = VALUE (input units) "
+                      "x=VALUE: simulate the part of the container left of the vertical line x = VALUE (input units; "
+                      "unlike pak flow, only a vertical line) "
                       "and show it reflected across the line too (thesis Fig. 5.18)"}};
   return table;
 }

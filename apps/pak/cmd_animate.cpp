@@ -56,7 +56,11 @@ int runAnimate(AnimateArguments& args, const CLI::App& command) {
   const auto start = Clock::now();
   const CommonArguments& common = args.common;
   if (!common.config.empty()) animateOptions().applyConfig(common.config, command, args);
-  if (!args.mirror.empty()) args.options.mirrorX = parseMirror(args.mirror);
+  if (!args.mirror.empty()) {
+    const MirrorLine line = parseMirror(args.mirror);
+    if (!line.isVertical()) throw InputError("--mirror", "pak animate mirrors across a vertical line only: x=VALUE");
+    args.options.mirrorX = line.from.x;
+  }
   checkOutputOptions(args);
   if (!args.video.empty()) checkVideoTarget(args.video);  // before the simulation, not after it
   if (command.count("--png-at") > 0 && common.png.empty()) throw InputError("--png-at", "needs --png FILE, the preview it times");

@@ -27,7 +27,7 @@ int runFlow(FlowArguments& args, const CLI::App& command) {
   auto start = Clock::now();
   const CommonArguments& common = args.common;
   if (!common.config.empty()) flowOptions().applyConfig(common.config, command, args);
-  if (!args.mirror.empty()) args.options.mirrorX = parseMirror(args.mirror);
+  if (!args.mirror.empty()) args.options.mirror = parseMirror(args.mirror);
 
   const LoadedScene input = loadScene(args.scene, SceneOptions{});
   const Scene& scene = input.scene;

@@ -37,7 +37,7 @@ OptionTable<FlowOptions> flowOptionTable() {
 OptionTable<FlowArguments> textOptionTable() {
   using A = FlowArguments;
   return {
-      {"mirror", field(&A::mirror), "x=VALUE: pack the part of the scene left of the vertical line x = VALUE (input units) and reflect it (thesis Fig. 3.13)"},
+      {"mirror", field(&A::mirror), "pack one side of a line and reflect it across (thesis Fig. 3.13): x=VALUE packs the part left of that vertical line, y=VALUE the part above that horizontal one, X1,Y1,X2,Y2 the part on the left of a walk from (X1, Y1) to (X2, Y2) as seen on screen (input units)"},
       {"smooth", field(&A::smooth), "write outlines as cubic Béziers fitted within 0.4 canonical units instead of polygons (thesis 3.4's post-process): smaller files, easier to edit"},
   };
 }

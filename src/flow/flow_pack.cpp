@@ -46,11 +46,9 @@ void validate(const FlowOptions& o) {
   if (!positive(o.growthLimit)) throw InputError("--growth-limit", "must be a positive number");
   if (o.maxRotationDegrees < 0 || o.maxRotationDegrees > 45) throw InputError("--max-rotation", "must be 0 to 45 degrees");
   if (!(std::isfinite(o.fillGapsInset) && o.fillGapsInset >= 0.0)) throw InputError("--fill-gaps-inset", "must be ≥ 0");
-  if (o.mirrorX && !std::isfinite(*o.mirrorX)) throw InputError("--mirror", "needs a finite x");
-}
-
-Region rectangle(Box b) {
-  return Region{Polygon{Ring{b.min, {b.max.x, b.min.y}, b.max, {b.min.x, b.max.y}}, {}}};
+  if (o.mirror && !(std::isfinite(o.mirror->from.x) && std::isfinite(o.mirror->from.y) && std::isfinite(o.mirror->to.x) &&
+                    std::isfinite(o.mirror->to.y) && o.mirror->from != o.mirror->to))
+    throw InputError("--mirror", "needs two different points with finite coordinates");
 }
 
 // Whether most of the line's samples lie in the region or within `reach` of its boundary
@@ -144,7 +142,7 @@ FlowPacking FlowPacker::run() {
   packing_.seconds.refinement = secondsSince(t);
   t = Clock::now();
   if (options_.fillGaps) fillGaps();
-  if (options_.mirrorX) mirror();
+  if (options_.mirror) mirror();
   packing_.seconds.extras = secondsSince(t);
   return std::move(packing_);
 }
@@ -166,11 +164,12 @@ void FlowPacker::setUp() {
     *d *= unit_;
 
   std::vector<Region> regions = setup_.containers.regions;
-  if (options_.mirrorX) {
-    Box left = box;
-    left.min -= Vec2{1.0, 1.0} * lCanvas;
-    left.max = {*options_.mirrorX, box.max.y + lCanvas};
-    for (Region& r : regions) r = intersect(r, rectangle(left));
+  if (options_.mirror) {  // a square reaching past the containers on the packed side
+    const Vec2 centre = (box.min + box.max) * 0.5;
+    const double reach = length(box.max - box.min) + distance(centre, options_.mirror->reflect(centre)) + lCanvas;
+    Region side{options_.mirror->packedSide(centre, reach)};
+    normalizeOrientation(side);
+    for (Region& r : regions) r = intersect(r, side);
   }
   packing_.fixedArt = setup_.fixedPainted;
   packing_.containers = regions;
@@ -465,10 +464,10 @@ void FlowPacker::fillGaps() {
   }
 }
 
-// Figure 3.13: the packed half reflected across x = mirrorX.
+// Figure 3.13: the packed half reflected across the mirror line.
 void FlowPacker::mirror() {
-  const double m = *options_.mirrorX;
-  auto reflect = [m](Vec2 p) { return Vec2{2.0 * m - p.x, p.y}; };
+  const MirrorLine line = *options_.mirror;
+  auto reflect = [&line](Vec2 p) { return line.reflect(p); };
   auto reflectRegion = [&](Region r) {
     for (Polygon& p : r) {
       for (Vec2& v : p.outer) v = reflect(v);

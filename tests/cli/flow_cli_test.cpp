@@ -94,6 +94,24 @@ TEST(CliFlow, EachContainerMayNameItsOwnDensityAndElements) {
   EXPECT_NE(failed.err.find("data-gap"), std::string::npos);
 }
 
+// The koi across its horizontal axis: y=240 and the same line through two points give the
+// same file, and every element has its twin.
+TEST(CliFlow, MirrorTakesAHorizontalLineOrTwoPoints) {
+  ScratchFolder dir("cli-flow-mirror");
+  const std::string base = "flow examples/flow/koi.svg -e examples/flow/elements" + kQuick;
+  PakRun horizontal = runPak(base + " --mirror y=240 -o " + shellQuoted(dir.file("y.svg")) + " --report " +
+                             shellQuoted(dir.file("y.json")));
+  ASSERT_EQ(horizontal.exitCode, 0) << horizontal.err;
+  PakRun points = runPak(base + " --mirror 60,240,740,240 -o " + shellQuoted(dir.file("p.svg")));
+  ASSERT_EQ(points.exitCode, 0) << points.err;
+  EXPECT_EQ(readWholeFile(dir.file("y.svg")), readWholeFile(dir.file("p.svg")));
+  auto report = nlohmann::json::parse(readWholeFile(dir.file("y.json")));
+  EXPECT_GE(report["element-count"].get<int>(), 4);
+  EXPECT_EQ(report["element-count"].get<int>() % 2, 0);
+  EXPECT_EQ(report["overlap-count"], 0) << report["problems"];
+  EXPECT_EQ(report["elements-outside"], 0);
+}
+
 TEST(CliFlow, BadInputIsOneErrorLineAndExitTwo) {
   ScratchFolder dir("cli-flow-bad");
   std::string out = shellQuoted(dir.file("o.svg"));
@@ -103,7 +121,8 @@ TEST(CliFlow, BadInputIsOneErrorLineAndExitTwo) {
   std::string badConfig = dir.write("c.json", R"({"iterations": "many"})");
   for (const std::string& args :
        {"flow " + shellQuoted(noGuides) + " -e examples/flow/elements -o " + out,
-        "flow examples/flow/koi.svg -e examples/flow/elements -o " + out + " --mirror y=3",
+        "flow examples/flow/koi.svg -e examples/flow/elements -o " + out + " --mirror z=3",
+        "flow examples/flow/koi.svg -e examples/flow/elements -o " + out + " --mirror 1,2,1,2",
         "flow examples/flow/koi.svg -e examples/flow/elements -o " + out + " --gap -4",
         "flow examples/flow/koi.svg -e examples/flow/elements -o " + out + " --min-length 500 --max-length 100",
         "flow examples/flow/koi.svg -e examples/flow/elements -o " + out + " --config " + shellQuoted(badConfig),

@@ -176,7 +176,7 @@ TEST(FlowPack, AnElementIsNotPlacedWhereItWouldFoldOverItself) {
 
 TEST(FlowPack, MirrorReflectsTheLeftHalf) {
   FlowOptions o = quickOptions();
-  o.mirrorX = 200.0;
+  o.mirror = MirrorLine::vertical(200.0);
   FlowPacking p = packFlow(rectangleScene(), Library{lens()}, o);
   ASSERT_EQ(p.elements.size() % 2, 0u);
   const std::size_t half = p.elements.size() / 2;
@@ -184,6 +184,31 @@ TEST(FlowPack, MirrorReflectsTheLeftHalf) {
     EXPECT_LE(bounds(p.elements[i].outline).max.x, 200.0);
     EXPECT_NEAR(area(p.elements[i].outline), area(p.elements[i + half].outline), 1e-9 * p.elements[i].area);
     EXPECT_NEAR(bounds(p.elements[i + half].outline).min.x, 400.0 - bounds(p.elements[i].outline).max.x, 1e-9);
+  }
+  expectValidPacking(p);
+}
+
+// Any line: the square's diagonal, walked from its bottom-left corner to its top-right (y
+// down, so up the screen), packs the upper-left half; every element there has its reflection
+// in the other.
+TEST(FlowPack, MirrorAcrossAnObliqueLineReflectsEveryElement) {
+  Scene scene;
+  scene.source = "test";
+  scene.container = Region{Polygon{box(0, 0, 200, 200), {}}};
+  scene.guides.push_back({{20, 180}, {180, 20}});
+  FlowOptions o = quickOptions();
+  o.mirror = MirrorLine{{0, 200}, {200, 0}};
+  FlowPacking p = packFlow(scene, Library{lens()}, o);
+  ASSERT_GE(p.elements.size(), 2u);
+  ASSERT_EQ(p.elements.size() % 2, 0u);
+  const std::size_t half = p.elements.size() / 2;
+  for (std::size_t i = 0; i < half; ++i) {
+    const FlowElement &packed = p.elements[i], &twin = p.elements[i + half];
+    for (const Vec2 q : packed.outline.front().outer) EXPECT_LE(q.x + q.y, 200.0 + 1e-6);  // above the diagonal
+    EXPECT_NEAR(area(packed.outline), area(twin.outline), 1e-9 * packed.area);
+    const Vec2 mirrored = o.mirror->reflect(packed.streamline.front());
+    EXPECT_NEAR(twin.streamline.front().x, mirrored.x, 1e-9);
+    EXPECT_NEAR(twin.streamline.front().y, mirrored.y, 1e-9);
   }
   expectValidPacking(p);
 }

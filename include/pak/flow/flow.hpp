@@ -17,6 +17,7 @@
 #include "pak/flow/skeletal_stroke.hpp"
 #include "pak/flow/vector_field.hpp"
 #include "pak/geom/art.hpp"
+#include "pak/geom/mirror_line.hpp"
 #include "pak/geom/scene.hpp"
 
 namespace pak {
@@ -50,8 +51,8 @@ struct FlowOptions {
   // --- extras (3.4)
   bool fillGaps = false;         // negative-space elements from offset leftover gaps (Fig. 3.15)
   double fillGapsInset = 0.0;    // their inset from the placed elements; 0: spacing / 2
-  // Mirror symmetry (Fig. 3.13): pack the part left of x = mirrorX (input units) and reflect it.
-  std::optional<double> mirrorX;
+  // Mirror symmetry (Fig. 3.13): pack the part on the line's packed side and reflect it.
+  std::optional<MirrorLine> mirror;
   // --- run
   std::uint64_t seed = 1;
 };
