@@ -19,8 +19,8 @@
 namespace pak::cli {
 namespace {
 
-// --smooth: how far the written Bézier outlines may stray from the bent polygons (canonical units).
-constexpr double kSmoothTolerance = 0.4;
+// How far the written Bézier outlines may stray from the bent polygons (canonical units).
+constexpr double kCurveTolerance = 0.4;
 
 int runFlow(FlowArguments& args, const CLI::App& command) {
   using Clock = std::chrono::steady_clock;
@@ -62,8 +62,9 @@ int runFlow(FlowArguments& args, const CLI::App& command) {
   drawingOptions.debugLayers = common.debugLayers;
   Drawing drawing = flowDrawing(input.layout, packing, elements, drawingOptions);
   SvgWriteOptions svgOptions;
-  if (args.smooth) svgOptions.curveTolerance = kSmoothTolerance / packing.canonicalScale;
-  writeSvgFile(drawing, common.output, svgOptions);
+  if (!args.polyline) svgOptions.curveTolerance = kCurveTolerance / packing.canonicalScale;
+  SvgPathStats paths;
+  writeSvgFile(drawing, common.output, svgOptions, &paths);
   writePngPreview(drawing, common.png, common.pngWidth);
 
   const PackingCheck check = auditFlowPacking(packing, library);
@@ -74,7 +75,7 @@ int runFlow(FlowArguments& args, const CLI::App& command) {
                  "%.3f of the free space, %d overlapping pairs, %d outside, %d folded, %.1f s\n",
                  packing.elements.size(), packing.gapElements.size(), packing.streamlines.size(), packing.iterations,
                  flowFill(packing), check.overlappingPairs, check.elementsOutside, check.selfIntersecting, wall);
-  if (!common.report.empty()) writeFileAtomically(common.report, flowReport(args, packing, check, wall).dump(2) + "\n");
+  if (!common.report.empty()) writeFileAtomically(common.report, flowReport(args, packing, check, paths, wall).dump(2) + "\n");
   return 0;
 }
 

@@ -14,8 +14,8 @@ struct FlowArguments {
   std::string scene;  // -c/--container, or the first argument
   std::vector<std::string> elements;
   // Also --config keys and report parameters (flowOptions); --mirror is parsed into `options`.
-  std::string mirror;  // x=VALUE
-  bool smooth = false;
+  std::string mirror;  // x=VALUE, y=VALUE or X1,Y1,X2,Y2
+  bool polyline = false;  // outlines as polygons, not fitted Béziers
   FlowOptions options;
 };
 

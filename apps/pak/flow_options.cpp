@@ -33,12 +33,12 @@ OptionTable<FlowOptions> flowOptionTable() {
   };
 }
 
-// What the run reads itself (--smooth) or parses into FlowOptions (--mirror).
+// What the run reads itself (--polyline) or parses into FlowOptions (--mirror).
 OptionTable<FlowArguments> textOptionTable() {
   using A = FlowArguments;
   return {
       {"mirror", field(&A::mirror), "pack one side of a line and reflect it across (thesis Fig. 3.13): x=VALUE packs the part left of that vertical line, y=VALUE the part above that horizontal one, X1,Y1,X2,Y2 the part on the left of a walk from (X1, Y1) to (X2, Y2) as seen on screen (input units)"},
-      {"smooth", field(&A::smooth), "write outlines as cubic Béziers fitted within 0.4 canonical units instead of polygons (thesis 3.4's post-process): smaller files, easier to edit"},
+      {"polyline", field(&A::polyline), "write outlines as polygons (the bent points), not as cubic Béziers fitted within 0.4 canonical units (thesis 3.4's post-process: curves to edit in Inkscape or Illustrator, smaller files); the report gives the point count and the fit's largest deviation"},
   };
 }
 

@@ -22,7 +22,7 @@ PackingCheck auditFlowPacking(const FlowPacking& packing, const Library& library
 }
 
 nlohmann::json flowReport(const FlowArguments& args, const FlowPacking& packing, const PackingCheck& check,
-                          double wallSeconds) {
+                          const SvgPathStats& paths, double wallSeconds) {
   nlohmann::json parameters;
   flowOptions().report(parameters, args);
   nlohmann::json report =
@@ -43,6 +43,9 @@ nlohmann::json flowReport(const FlowArguments& args, const FlowPacking& packing,
                        {"refinement", packing.seconds.refinement}, {"extras", packing.seconds.extras},
                        {"wall", wallSeconds}};
   reportCheck(report, check);
+  report["output-outlines"] = args.polyline ? "polygons" : "cubic Béziers";
+  report["output-points"] = paths.points;  // every path's coordinate pairs, Bézier control points included
+  report["output-largest-curve-deviation"] = paths.largestDeviation * packing.canonicalScale;
   report["canonical-scale"] = packing.canonicalScale;
   reportElementsPerContainer(report, packing.elements, packing.containers.size());
   return report;

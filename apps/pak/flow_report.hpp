@@ -4,6 +4,7 @@
 
 #include "flow_arguments.hpp"
 #include "pak/geom/verify.hpp"
+#include "pak/io/svg_writer.hpp"
 
 namespace pak::cli {
 
@@ -11,7 +12,8 @@ namespace pak::cli {
 // and the bent elements that fold: `library` is the one packFlow was given.
 PackingCheck auditFlowPacking(const FlowPacking& packing, const Library& library);
 
+// `paths`: what the output SVG's paths hold (writeSvgFile).
 nlohmann::json flowReport(const FlowArguments& args, const FlowPacking& packing, const PackingCheck& check,
-                          double wallSeconds);
+                          const SvgPathStats& paths, double wallSeconds);
 
 }  // namespace pak::cli

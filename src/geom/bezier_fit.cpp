@@ -5,6 +5,7 @@
 #include <string>
 
 #include "pak/error.hpp"
+#include "pak/geom/closest_point.hpp"
 
 // Schneider's curve fitting [Sch90]: chord-length parameters, a least-squares solve for the
 // two inner control points along fixed end tangents, a few Newton–Raphson corrections of the
@@ -258,6 +259,18 @@ Polyline flatten(const std::vector<CubicBezier>& curves, double tolerance) {
     }
   }
   return out;
+}
+
+double largestDistanceToChain(const std::vector<Vec2>& points, const std::vector<CubicBezier>& curves, double precision) {
+  const Polyline chain = flatten(curves, precision);
+  double largest2 = 0.0;
+  for (Vec2 p : points) {
+    double best2 = lengthSquared(p - chain.front());
+    for (std::size_t k = 1; k < chain.size() && best2 > largest2; ++k)  // no nearer than the largest: skip
+      best2 = std::min(best2, lengthSquared(p - closestPointOnSegment(p, chain[k - 1], chain[k])));
+    largest2 = std::max(largest2, best2);
+  }
+  return std::sqrt(largest2);
 }
 
 }  // namespace pak

@@ -81,21 +81,39 @@ std::string hexColor(const Color& color) {
   return buffer.data();
 }
 
-std::string pathData(const Shape& shape, int precision, double curveTolerance) {
+std::string pathData(const Shape& shape, int precision, double curveTolerance, SvgPathStats* stats) {
+  // The deviation is measured on the chain flattened this finely (about its error).
+  constexpr double kDeviationPrecision = 0.05;  // × curveTolerance
   std::string d;
-  auto point = [&](Vec2 p) { return formatNumber(p.x, precision) + ',' + formatNumber(p.y, precision); };
+  auto put = [&](Vec2 p) {  // appends "x,y"
+    if (stats) ++stats->points;
+    d += formatNumber(p.x, precision);
+    d += ',';
+    d += formatNumber(p.y, precision);
+  };
   for (const Subpath& subpath : shape.subpaths) {
     if (subpath.points.empty()) continue;
     if (!d.empty()) d += ' ';
     if (curveTolerance > 0.0 && subpath.points.size() >= 3) {
       std::vector<CubicBezier> curves = subpath.closed ? fitCubicBeziersClosed(subpath.points, curveTolerance)
                                                        : fitCubicBeziers(subpath.points, curveTolerance);
-      d += "M" + point(curves.front()[0]);
-      for (const CubicBezier& c : curves) d += " C" + point(c[1]) + ' ' + point(c[2]) + ' ' + point(c[3]);
+      d += 'M';
+      put(curves.front()[0]);
+      for (const CubicBezier& c : curves) {
+        d += " C";
+        put(c[1]);
+        d += ' ';
+        put(c[2]);
+        d += ' ';
+        put(c[3]);
+      }
+      if (stats)
+        stats->largestDeviation = std::max(stats->largestDeviation, largestDistanceToChain(subpath.points, curves,
+                                                                                           kDeviationPrecision * curveTolerance));
     } else {
       for (std::size_t i = 0; i < subpath.points.size(); ++i) {
         d += i == 0 ? "M" : (i == 1 ? " L" : " ");
-        d += point(subpath.points[i]);
+        put(subpath.points[i]);
       }
     }
     if (subpath.closed) d += " Z";
@@ -165,7 +183,7 @@ void SvgBuilder::writeGroup(const DrawingGroup& group, int depth) {
 }
 
 void SvgBuilder::writeShape(const DrawnShape& shape, int depth) {
-  std::string d = pathData(shape, precision_, curveTolerance_);
+  std::string d = pathData(shape, precision_, curveTolerance_, stats);
   if (d.empty()) return;  // nothing to draw; an empty d is an SVG error
   indent(depth);
   out_ += "<path";

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "pak/io/drawing.hpp"
+#include "pak/io/svg_writer.hpp"
 
 namespace pak::svg_builder {
 
@@ -20,7 +21,8 @@ bool isXmlName(const std::string& name);
 std::string formatNumber(double value, int precision);
 std::string hexColor(const Color& color);
 // The `d` of a shape: M/L/Z with line segments, or cubic Béziers fitted within curveTolerance > 0.
-std::string pathData(const Shape& shape, int precision, double curveTolerance);
+// `stats`, when given, counts its points and takes the fits' largest deviation into account.
+std::string pathData(const Shape& shape, int precision, double curveTolerance, SvgPathStats* stats = nullptr);
 // The drawing's box, or the bounds of what it draws when the box was left empty.
 Box drawingBox(const Drawing& drawing);
 
@@ -34,6 +36,8 @@ class SvgBuilder {
   // Appended to every group and shape id (and clip id), to keep ids unique when one document
   // holds several copies of a drawing.
   std::string idSuffix;
+  // Optional: what the written paths hold (pathData's stats).
+  SvgPathStats* stats = nullptr;
 
   // The XML declaration and the <svg> root sized by the first drawing, with the namespaces and
   // <defs> of copied markup in all of them.

@@ -13,20 +13,23 @@
 
 namespace pak {
 
-std::string toSvgString(const Drawing& drawing, const SvgWriteOptions& options) {
+std::string toSvgString(const Drawing& drawing, const SvgWriteOptions& options, SvgPathStats* stats) {
   int precision = std::clamp(options.precision, 0, 12);
   const double curveTolerance = std::isfinite(options.curveTolerance) ? std::max(0.0, options.curveTolerance) : 0.0;
   svg_builder::SvgBuilder builder(precision, curveTolerance);
+  if (stats) *stats = {};
+  builder.stats = stats;
   builder.beginDocument({&drawing});
   for (const DrawingGroup& group : drawing.groups) builder.writeGroup(group, 1);
   builder.endDocument();
   return std::move(builder.text());
 }
 
-void writeSvgFile(const Drawing& drawing, const std::string& path, const SvgWriteOptions& options) {
+void writeSvgFile(const Drawing& drawing, const std::string& path, const SvgWriteOptions& options,
+                  SvgPathStats* stats) {
   std::string text;
   try {
-    text = toSvgString(drawing, options);
+    text = toSvgString(drawing, options, stats);
   } catch (const InputError& error) {
     throw InputError(path, error.what());
   }

@@ -45,13 +45,24 @@ TEST(CliFlow, MedallionKeepsItsFixedSunAndFixedSpinesAndIsDeterministic) {
   std::string common = "flow examples/flow/medallion.svg -e examples/flow/elements" + kQuick + " --gap 80 --seed 3";
   PakRun a = runPak(common + " -o " + shellQuoted(dir.file("a.svg")) + " --report " + shellQuoted(dir.file("a.json")));
   PakRun b = runPak(common + " -o " + shellQuoted(dir.file("b.svg")));
-  PakRun smooth = runPak(common + " --smooth -o " + shellQuoted(dir.file("c.svg")));
-  ASSERT_EQ(smooth.exitCode, 0) << smooth.err;
-  EXPECT_NE(readWholeFile(dir.file("c.svg")).find(" C"), std::string::npos);
+  PakRun polygons = runPak(common + " --polyline -o " + shellQuoted(dir.file("c.svg")) + " --report " +
+                           shellQuoted(dir.file("c.json")));
+  ASSERT_EQ(polygons.exitCode, 0) << polygons.err;
   ASSERT_EQ(a.exitCode, 0) << a.err;
   ASSERT_EQ(b.exitCode, 0) << b.err;
   EXPECT_EQ(readWholeFile(dir.file("a.svg")), readWholeFile(dir.file("b.svg")));
+  // Curves by default, polygons with --polyline; the curves take fewer points and keep within
+  // their tolerance of the polygons (0.4 canonical units).
+  EXPECT_NE(readWholeFile(dir.file("a.svg")).find(" C"), std::string::npos);
+  EXPECT_EQ(readWholeFile(dir.file("c.svg")).find(" C"), std::string::npos);
   auto report = nlohmann::json::parse(readWholeFile(dir.file("a.json")));
+  auto polygonReport = nlohmann::json::parse(readWholeFile(dir.file("c.json")));
+  EXPECT_EQ(report["output-outlines"], "cubic Béziers");
+  EXPECT_EQ(polygonReport["output-outlines"], "polygons");
+  EXPECT_LT(report["output-points"].get<int>(), polygonReport["output-points"].get<int>());
+  EXPECT_GT(report["output-largest-curve-deviation"].get<double>(), 0.0);
+  EXPECT_LE(report["output-largest-curve-deviation"].get<double>(), 0.4 * 1.05);
+  EXPECT_EQ(polygonReport["output-largest-curve-deviation"], 0.0);
   EXPECT_EQ(report["overlap-count"], 0);  // the fixed sun counts as an element here
   EXPECT_EQ(report["elements-outside"], 0);
   EXPECT_GE(report["element-count"].get<int>(), 8);

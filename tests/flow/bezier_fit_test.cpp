@@ -123,5 +123,20 @@ TEST(BezierFit, DegenerateInputGivesFiniteCurves) {
   EXPECT_THROW(flatten(two, -1.0), InputError);
 }
 
+// Known answers: points on a straight chain are 0 from it; a point 0.3 off its middle is 0.3
+// away, and one past its end is measured to the end point.
+TEST(BezierFit, LargestDistanceToChainHasKnownAnswers) {
+  const std::vector<CubicBezier> chain{{Vec2{0, 0}, Vec2{1, 0}, Vec2{2, 0}, Vec2{3, 0}},
+                                       {Vec2{3, 0}, Vec2{4, 0}, Vec2{5, 0}, Vec2{6, 0}}};
+  EXPECT_DOUBLE_EQ(largestDistanceToChain({{0, 0}, {2.5, 0}, {6, 0}}, chain, 1e-3), 0.0);
+  EXPECT_NEAR(largestDistanceToChain({{1, 0}, {3, 0.3}, {5, -0.1}}, chain, 1e-3), 0.3, 1e-12);
+  EXPECT_NEAR(largestDistanceToChain({{6.4, 0.3}}, chain, 1e-3), 0.5, 1e-12);
+  // A fit keeps within about its tolerance of what it fits.
+  std::vector<Vec2> arc;
+  for (int i = 0; i <= 60; ++i) arc.push_back({50.0 * std::cos(i * 0.05), 50.0 * std::sin(i * 0.05)});
+  const double d = largestDistanceToChain(arc, fitCubicBeziers(arc, 0.1), 1e-3);
+  EXPECT_LE(d, 0.1 + 1e-3);
+}
+
 }  // namespace
 }  // namespace pak

@@ -17,5 +17,8 @@ std::vector<CubicBezier> fitCubicBeziers(const Polyline& line, double tolerance,
 std::vector<CubicBezier> fitCubicBeziersClosed(const Ring& ring, double tolerance, double cornerAngle = 1.0);
 // Points along the chain, at most `tolerance` from the curves (first and last points kept).
 Polyline flatten(const std::vector<CubicBezier>& curves, double tolerance);
+// The largest distance from any of `points` to the chain (flattened within `precision`, which
+// is also about the error of the answer): how far a fit strays from what it fits.
+double largestDistanceToChain(const std::vector<Vec2>& points, const std::vector<CubicBezier>& curves, double precision);
 
 }  // namespace pak

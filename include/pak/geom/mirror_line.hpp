@@ -17,7 +17,7 @@ struct MirrorLine {
   static MirrorLine horizontal(double y) { return {{0.0, y}, {1.0, y}}; }
 
   Vec2 direction() const { return normalized(to - from); }
-  // Whether the line is x = constant, and that constant.
+  // Whether the line is x = constant (from.x).
   bool isVertical() const { return from.x == to.x; }
   // p reflected across the line.
   Vec2 reflect(Vec2 p) const {

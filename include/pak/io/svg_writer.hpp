@@ -1,5 +1,6 @@
 #pragma once
 // Writes a Drawing as SVG that opens in Inkscape and browsers.
+#include <cstddef>
 #include <string>
 
 #include "pak/io/drawing.hpp"
@@ -14,9 +15,17 @@ struct SvgWriteOptions {
   double curveTolerance = 0.0;
 };
 
-std::string toSvgString(const Drawing& drawing, const SvgWriteOptions& = {});
+// What the written paths hold, for a report.
+struct SvgPathStats {
+  std::size_t points = 0;         // coordinate pairs in the paths' `d` (control points included)
+  double largestDeviation = 0.0;  // of a fitted curve from the points it fits (input units; 0: none fitted)
+};
+
+// `stats`, when given, receives what the paths hold (measuring the deviation costs a little).
+std::string toSvgString(const Drawing& drawing, const SvgWriteOptions& = {}, SvgPathStats* stats = nullptr);
 // Atomic: writes a temporary file beside `path`, then renames it. Throws InputError if
 // the folder cannot be written.
-void writeSvgFile(const Drawing& drawing, const std::string& path, const SvgWriteOptions& = {});
+void writeSvgFile(const Drawing& drawing, const std::string& path, const SvgWriteOptions& = {},
+                  SvgPathStats* stats = nullptr);
 
 }  // namespace pak
