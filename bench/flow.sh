@@ -12,6 +12,7 @@ header="date,commit,scene,elements,streamlines,iterations,wall_s_median,field_s,
 bench_csv "$csv" "$header"
 scenes=("koi|examples/flow/koi.svg"
         "medallion|examples/flow/medallion.svg"
+        "owl|examples/flow/owl.svg --mirror x=300"
         "koi-50|examples/flow/koi.svg --gap 30 --min-length 45 --max-length 180")
 for entry in "${scenes[@]}"; do
   name=${entry%%|*}

@@ -123,6 +123,21 @@ TEST(CliFlow, MirrorTakesAHorizontalLineOrTwoPoints) {
   EXPECT_EQ(report["elements-outside"], 0);
 }
 
+// The owl (fixed eyes and beak, mirrored across x = 300): clean, symmetric, no fold.
+TEST(CliFlow, TheMirroredOwlIsCleanAndSymmetric) {
+  ScratchFolder dir("cli-flow-owl");
+  PakRun run = runPak("flow examples/flow/owl.svg -e examples/flow/elements --mirror x=300" + kQuick + " -o " +
+                      shellQuoted(dir.file("owl.svg")) + " --report " + shellQuoted(dir.file("owl.json")));
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  auto report = nlohmann::json::parse(readWholeFile(dir.file("owl.json")));
+  EXPECT_GE(report["element-count"].get<int>(), 10);
+  EXPECT_EQ(report["element-count"].get<int>() % 2, 0);
+  EXPECT_EQ(report["overlap-count"], 0) << report["problems"];  // the eyes and beak count as an element
+  EXPECT_EQ(report["elements-outside"], 0);
+  EXPECT_EQ(report["self-intersecting-outlines"], 0);
+  EXPECT_NE(readWholeFile(dir.file("owl.svg")).find("#2b2118"), std::string::npos);  // the pupils, copied
+}
+
 TEST(CliFlow, BadInputIsOneErrorLineAndExitTwo) {
   ScratchFolder dir("cli-flow-bad");
   std::string out = shellQuoted(dir.file("o.svg"));
