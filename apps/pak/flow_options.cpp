@@ -8,7 +8,7 @@ namespace {
 // FlowOptions's members.
 OptionTable<FlowOptions> flowOptionTable() {
   using O = FlowOptions;
-  return {
+  OptionTable<O> own{
       {"gap", field(&O::gap), "s_gap, the distance between neighbouring streamlines, about an element's width (canonical units: l_canvas, the larger side of the containers' bounds, is 1000)"},
       {"min-length", field(&O::minLength), "s_min: shorter streamlines get no element (canonical units)"},
       {"max-length", field(&O::maxLength), "s_max: streamlines stop before this length (canonical units)"},
@@ -29,8 +29,8 @@ OptionTable<FlowOptions> flowOptionTable() {
       {"shift-neighbours", field(&O::shiftNeighbours), "nearest nodes examined from each node when shifting a streamline"},
       {"fill-gaps", field(&O::fillGaps), "add shapes made from the negative space between the elements (thesis Fig. 3.15)"},
       {"fill-gaps-inset", field(&O::fillGapsInset), "with --fill-gaps: the gap shapes' inset from the elements (canonical units; 0: spacing / 2)"},
-      seedOption(field(&O::seed)),
   };
+  return own + mounted(runOptions(), field(&O::run));
 }
 
 // What the run reads itself (--polyline) or parses into FlowOptions (--mirror).

@@ -12,7 +12,7 @@ namespace pak::cli {
 const OptionTable<SimulationParameters>& simulationOptions();
 const OptionTable<RunOptions>& runOptions();
 
-// --seed alone, for options without a RunOptions (FLOWPAK has no threads yet).
+// --seed alone, for options without a RunOptions.
 template <class Root>
 Option<Root> seedOption(Field<Root, std::uint64_t> seed) {
   return {"seed", std::move(seed), "random seed; the same seed gives the same result"};

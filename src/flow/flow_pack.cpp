@@ -17,6 +17,7 @@
 #include "pak/geom/resample.hpp"
 #include "pak/geom/verify.hpp"
 #include "sim/packing_setup.hpp"
+#include "sim/parallel.hpp"
 
 namespace pak {
 namespace {
@@ -110,6 +111,17 @@ class FlowPacker {
   Region othersNear(std::size_t i, const Box& box, bool skins) const;
   Region placementSpace(std::size_t i, const Region& blob) const;
   void accept(std::size_t i, const Placement& p);
+  // One element's refinement step, proposed from the current state (see refine).
+  struct Step {
+    Placement placement;
+    Region blob;       // the grown blob (growing)
+    Box reach;         // every other element it read has skin bounds meeting this box
+    bool tried = false;
+    std::size_t seen = 0;  // how many changes of the phase it was proposed after
+  };
+  Step proposeShift(std::size_t i) const;
+  Step proposeGrowth(std::size_t i) const;
+  ShiftOptions shiftOptions() const;
   void refine();
   void fillGaps();
   void mirror();
@@ -233,7 +245,7 @@ void FlowPacker::packContainer(int k) {
   lineOptions.minLength = options_.minLength;
   lineOptions.maxLength = options_.maxLength;
   lineOptions.sampleSpacing = options_.sampleSpacing;
-  lineOptions.seed = options_.seed + static_cast<std::uint64_t>(k);
+  lineOptions.seed = options_.run.seed + static_cast<std::uint64_t>(k);
   // Streamlines run where art may go (the free space inset by spacing / 2), so those seeded on
   // the boundary, which line the container, can carry an element.
   StreamlineInput input;
@@ -374,14 +386,15 @@ void FlowPacker::accept(std::size_t i, const Placement& p) {
 
 // Algorithm 2: each iteration shifts every streamline, then grows every blob, smallest
 // elements first, keeping a new placement when its area is at least α times the old one.
+//
+// In parallel, with the sequential result: every element's step is first proposed from the
+// state at the start of the phase, on all threads; then the steps are taken in order, and a
+// proposal is used only if no element taken before it in this phase changed within the
+// proposal's reach (all it read lies there). Else it is proposed again from the current
+// state. Either way each step sees what the sequential loop would, so the result does not
+// depend on the thread count.
 void FlowPacker::refine() {
-  ShiftOptions shift;
-  shift.limit = options_.growthLimit;
-  shift.fieldWeight = options_.shiftFieldWeight;
-  shift.distanceWeight = options_.shiftDistanceWeight;
-  shift.fieldPower = options_.shiftFieldPower;
-  shift.neighbours = options_.shiftNeighbours;
-  const double step = 0.5 * options_.sampleSpacing;
+  ThreadPool pool(options_.run.threads);
   auto smallestFirst = [&] {
     std::vector<std::size_t> order(packing_.elements.size());
     std::iota(order.begin(), order.end(), 0);
@@ -389,51 +402,107 @@ void FlowPacker::refine() {
                      [&](std::size_t a, std::size_t b) { return packing_.elements[a].area < packing_.elements[b].area; });
     return order;
   };
-  auto better = [&](const Placement& p, const FlowElement& e) {
-    return p.ok && p.area >= options_.growthTolerance * e.area;
+  std::vector<Step> proposals;
+  std::vector<Box> changed;  // skins' bounds, before and after, of the elements changed so far
+  std::vector<std::size_t> redo;
+  auto phase = [&](bool shifting) {
+    const std::vector<std::size_t> order = smallestFirst();
+    auto propose = [&](std::size_t k) {
+      proposals[k] = shifting ? proposeShift(order[k]) : proposeGrowth(order[k]);
+      proposals[k].seen = changed.size();
+    };
+    // Whether a proposal still holds: nothing changed within its reach since it was made.
+    auto holds = [&](std::size_t k) {
+      return std::none_of(changed.begin() + static_cast<std::ptrdiff_t>(proposals[k].seen), changed.end(),
+                          [&](const Box& b) { return b.overlaps(proposals[k].reach); });
+    };
+    changed.clear();
+    proposals.assign(order.size(), Step{});
+    const std::size_t threads = static_cast<std::size_t>(pool.threadCount());
+    if (threads > 1)
+      pool.parallelFor(order.size(), 1, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t k = begin; k < end; ++k) propose(k);
+      });
+    for (std::size_t k = 0; k < order.size(); ++k) {
+      if (threads == 1) {
+        propose(k);
+      } else if (!holds(k)) {  // it and the next ones that no longer hold, proposed again together
+        redo.clear();
+        for (std::size_t m = k; m < order.size() && redo.size() < threads; ++m)
+          if (m == k || !holds(m)) redo.push_back(m);
+        pool.parallelFor(redo.size(), 1, [&](std::size_t begin, std::size_t end) {
+          for (std::size_t r = begin; r < end; ++r) propose(redo[r]);
+        });
+      }
+      Step& step = proposals[k];
+      const std::size_t i = order[k];
+      FlowElement& e = packing_.elements[i];
+      if (!shifting) e.blob = std::move(step.blob);  // kept grown whether or not the element is
+      if (!step.tried) continue;
+      ++packing_.placementsTried;
+      if (step.placement.ok && step.placement.area >= options_.growthTolerance * e.area) {
+        changed.push_back(bounds(skins_[i]));
+        accept(i, step.placement);
+        changed.push_back(bounds(skins_[i]));
+        ++packing_.placementsAccepted;
+      }
+    }
   };
   for (int iteration = 1; iteration <= options_.iterations; ++iteration) {
-    // Shifting streamlines (fixed spines stay where the artist drew them).
-    for (std::size_t i : smallestFirst()) {
-      FlowElement& e = packing_.elements[i];
-      if (e.fixedSpine) continue;
-      const VectorField& field = packing_.fields[static_cast<std::size_t>(e.container)];
-      Box box = bounds(e.blob);
-      box.min -= Vec2{1.0, 1.0} * (options_.gap + options_.growthLimit);
-      box.max += Vec2{1.0, 1.0} * (options_.gap + options_.growthLimit);
-      Region occupied = othersNear(i, box, true);
-      LRFunction widths = blobLRFunction(e.blob, e.streamline, options_.lrSamples);
-      Polyline shifted = shiftStreamline(e.streamline, field, occupied, packing_.freeSpace, widths.maxLeft,
-                                         widths.maxRight, shift);
-      shifted = extendToBlob(shifted, e.blob, field, step);
-      Placement p = place(e, placementSpace(i, e.blob), shifted, true);
-      ++packing_.placementsTried;
-      if (better(p, e)) {
-        accept(i, p);
-        ++packing_.placementsAccepted;
-      }
-    }
-    // Growing blobs: the blob is kept grown whether or not the element is.
-    for (std::size_t i : smallestFirst()) {
-      FlowElement& e = packing_.elements[i];
-      const VectorField& field = packing_.fields[static_cast<std::size_t>(e.container)];
-      Box box = bounds(e.blob);
-      box.min -= Vec2{1.0, 1.0} * (options_.spacing + 2.0 * options_.growthLimit);
-      box.max += Vec2{1.0, 1.0} * (options_.spacing + 2.0 * options_.growthLimit);
-      e.blob = growBlob(e.blob, othersNear(i, box, false), packing_.freeSpace, options_.growthLimit);
-      Polyline extended = e.fixedSpine ? e.streamline : extendToBlob(e.streamline, e.blob, field, step);
-      Placement p = place(e, placementSpace(i, e.blob), extended, true);
-      ++packing_.placementsTried;
-      if (better(p, e)) {
-        accept(i, p);
-        ++packing_.placementsAccepted;
-      }
-    }
+    phase(true);   // shifting streamlines (fixed spines stay where the artist drew them)
+    phase(false);  // growing blobs
     packing_.iterations = iteration;
     packing_.areaPerIteration.push_back(totalArea());
     report("refinement", iteration);
     if (callbacks_.onIteration) callbacks_.onIteration(packing_, iteration);
   }
+}
+
+// Element i's streamline shifted (eq. 3.2) and the element placed on it again.
+FlowPacker::Step FlowPacker::proposeShift(std::size_t i) const {
+  Step step;
+  const FlowElement& e = packing_.elements[i];
+  if (e.fixedSpine) return step;
+  const VectorField& field = packing_.fields[static_cast<std::size_t>(e.container)];
+  Box box = bounds(e.blob);
+  box.min -= Vec2{1.0, 1.0} * (options_.gap + options_.growthLimit);
+  box.max += Vec2{1.0, 1.0} * (options_.gap + options_.growthLimit);
+  step.reach = box;  // the placement space reads within the blob's bounds, inside this box
+  Region occupied = othersNear(i, box, true);
+  LRFunction widths = blobLRFunction(e.blob, e.streamline, options_.lrSamples);
+  Polyline shifted = shiftStreamline(e.streamline, field, occupied, packing_.freeSpace, widths.maxLeft, widths.maxRight,
+                                     shiftOptions());
+  shifted = extendToBlob(shifted, e.blob, field, 0.5 * options_.sampleSpacing);
+  step.placement = place(e, placementSpace(i, e.blob), shifted, true);
+  step.tried = true;
+  return step;
+}
+
+// Element i's blob grown by g_limit and the element placed in it again.
+FlowPacker::Step FlowPacker::proposeGrowth(std::size_t i) const {
+  Step step;
+  const FlowElement& e = packing_.elements[i];
+  const VectorField& field = packing_.fields[static_cast<std::size_t>(e.container)];
+  Box box = bounds(e.blob);
+  box.min -= Vec2{1.0, 1.0} * (options_.spacing + 2.0 * options_.growthLimit);
+  box.max += Vec2{1.0, 1.0} * (options_.spacing + 2.0 * options_.growthLimit);
+  step.blob = growBlob(e.blob, othersNear(i, box, false), packing_.freeSpace, options_.growthLimit);
+  step.reach = box;
+  if (!step.blob.empty()) step.reach.add(bounds(step.blob));  // the placement space reads there
+  Polyline extended = e.fixedSpine ? e.streamline : extendToBlob(e.streamline, step.blob, field, 0.5 * options_.sampleSpacing);
+  step.placement = place(e, placementSpace(i, step.blob), extended, true);
+  step.tried = true;
+  return step;
+}
+
+ShiftOptions FlowPacker::shiftOptions() const {
+  ShiftOptions shift;
+  shift.limit = options_.growthLimit;
+  shift.fieldWeight = options_.shiftFieldWeight;
+  shift.distanceWeight = options_.shiftDistanceWeight;
+  shift.fieldPower = options_.shiftFieldPower;
+  shift.neighbours = options_.shiftNeighbours;
+  return shift;
 }
 
 // Figure 3.15: new shapes made from the negative space between the placed elements, inset

@@ -126,6 +126,27 @@ TEST(FlowPack, ASeedReproducesThePackingExactly) {
   }
 }
 
+// The refinement runs on several threads with the sequential loop's result.
+TEST(FlowPack, AnyThreadCountGivesTheSamePacking) {
+  Library library{lens(), halfLens()};
+  FlowOptions o = quickOptions();
+  o.iterations = 4;
+  o.run.threads = 1;
+  const FlowPacking one = packFlow(rectangleScene(), library, o);
+  for (int threads : {2, 3}) {
+    o.run.threads = threads;
+    const FlowPacking many = packFlow(rectangleScene(), library, o);
+    ASSERT_EQ(one.elements.size(), many.elements.size()) << threads << " threads";
+    EXPECT_EQ(one.placementsTried, many.placementsTried);
+    EXPECT_EQ(one.placementsAccepted, many.placementsAccepted);
+    for (std::size_t i = 0; i < one.elements.size(); ++i) {
+      EXPECT_EQ(one.elements[i].streamline, many.elements[i].streamline) << "element " << i;
+      EXPECT_EQ(one.elements[i].area, many.elements[i].area) << "element " << i;
+      EXPECT_EQ(one.elements[i].libraryIndex, many.elements[i].libraryIndex) << "element " << i;
+    }
+  }
+}
+
 TEST(FlowPack, FixedElementsAndFixedSpinesAreRespected) {
   Scene scene = rectangleScene();
   Shape sun;

@@ -19,6 +19,7 @@
 #include "pak/geom/art.hpp"
 #include "pak/geom/mirror_line.hpp"
 #include "pak/geom/scene.hpp"
+#include "pak/sim/run_options.hpp"
 
 namespace pak {
 
@@ -53,8 +54,8 @@ struct FlowOptions {
   double fillGapsInset = 0.0;    // their inset from the placed elements; 0: spacing / 2
   // Mirror symmetry (Fig. 3.13): pack the part on the line's packed side and reflect it.
   std::optional<MirrorLine> mirror;
-  // --- run
-  std::uint64_t seed = 1;
+  // --- run: the seed; threads for the refinement (the result is the same for any count)
+  RunOptions run;
 };
 
 struct FlowProgress {
