@@ -22,7 +22,7 @@ OptionTable<FlowOptions> flowOptionTable() {
       {"growth-tolerance", field(&O::growthTolerance), "α: a refined placement is kept when its area is at least α × the old one"},
       {"growth-limit", field(&O::growthLimit), "g_limit: how far a streamline end or a blob moves per iteration (canonical units)"},
       {"max-rotation", field(&O::maxRotationDegrees), "refinement tries rotations of ±1…N degrees"},
-      {"keep-folds", field(&O::keepFolds), "keep bent elements that fold over themselves (a turn sharper than the element is wide), as the thesis does; by default such a placement is refused: the element keeps its earlier place, or the streamline stays empty"},
+      {"keep-folds", field(&O::keepFolds), "keep bent elements that fold over themselves (a turn sharper than the element is wide), as the thesis does; by default the element goes on the longer side of the spine's sharpest turn (up to four cuts), else the placement is refused"},
       {"shift-distance-weight", field(&O::shiftDistanceWeight), "w_d of eq. 3.2: keeps a shifted streamline near the old one"},
       {"shift-field-weight", field(&O::shiftFieldWeight), "w_f of eq. 3.2: keeps a shifted streamline along the field"},
       {"shift-field-power", field(&O::shiftFieldPower), "p of eq. 3.2"},

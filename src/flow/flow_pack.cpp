@@ -16,6 +16,7 @@
 #include "pak/geom/closest_point.hpp"
 #include "pak/geom/resample.hpp"
 #include "pak/geom/verify.hpp"
+#include "pak/sim/packing.hpp"
 #include "sim/packing_setup.hpp"
 #include "sim/parallel.hpp"
 
@@ -319,6 +320,38 @@ bool foldsOverItself(const Region& bent, const Region& drawn) {
   }
   return false;
 }
+
+// Whether a filled ring of the bent art crosses itself where the same ring as drawn does not
+// (what the report counts; the outline alone can miss a fold of a part inside it).
+bool artFoldsOverItself(const std::vector<Shape>& bent, const std::vector<Shape>& drawn) {
+  const std::vector<Ring> rings = artRings(bent), rest = artRings(drawn);
+  for (std::size_t k = 0; k < rings.size() && k < rest.size(); ++k)
+    if (ringSelfIntersects(rings[k]) && !ringSelfIntersects(rest[k])) return true;
+  return false;
+}
+
+// The longer of the two parts of `line` on either side of its sharpest turn: the vertex where
+// the direction over `reach` of arclength before it and after it turns the most.
+Polyline longerSideOfSharpestTurn(const Polyline& line, double reach) {
+  const std::size_t n = line.size();
+  if (n < 3) return line;
+  std::vector<double> along(n, 0.0);
+  for (std::size_t k = 1; k < n; ++k) along[k] = along[k - 1] + distance(line[k - 1], line[k]);
+  std::size_t sharpest = 0, before = 0, after = 0;
+  double most = -1.0;
+  for (std::size_t k = 1; k + 1 < n; ++k) {
+    while (along[k] - along[before] > reach) ++before;
+    while (after + 1 < n && (after <= k || along[after] - along[k] < reach)) ++after;
+    const Vec2 in = line[k] - line[before], out = line[after] - line[k];
+    if (lengthSquared(in) == 0.0 || lengthSquared(out) == 0.0) continue;
+    const double turn = std::abs(std::atan2(cross(in, out), dot(in, out)));
+    if (turn > most) most = turn, sharpest = k;
+  }
+  if (most < 0.0) return line;
+  const bool head = along[sharpest] >= along[n - 1] - along[sharpest];
+  return head ? Polyline(line.begin(), line.begin() + static_cast<std::ptrdiff_t>(sharpest) + 1)
+              : Polyline(line.begin() + static_cast<std::ptrdiff_t>(sharpest), line.end());
+}
 }  // namespace
 
 // Thesis 3.3.5: the element and reflection whose LR function is closest to the blob's
@@ -333,8 +366,6 @@ Placement FlowPacker::place(const FlowElement& e, const Region& spaceAll, const 
                                 : extendToBlob(longestRunInside(streamline, space, 0.25 * options_.sampleSpacing), space,
                                                packing_.fields[static_cast<std::size_t>(e.container)],
                                                0.25 * options_.sampleSpacing);
-  if (spine.size() < 2 || polylineLength(spine) < 0.25 * options_.minLength) return best;
-  LRFunction blobLR = blobLRFunction(space, spine, options_.lrSamples);
   const std::vector<int>& types = setup_.containers.typesOf[static_cast<std::size_t>(e.container)];
   std::vector<LRFunction> candidates;
   std::vector<std::pair<int, int>> which;  // (type, rotation)
@@ -346,28 +377,39 @@ Placement FlowPacker::place(const FlowElement& e, const Region& spaceAll, const 
       which.emplace_back(type, r);
     }
   }
-  LRMatch match = bestMatch(candidates, blobLR);
-  if (match.candidate < 0) return best;
-  auto [type, rotation] = which[static_cast<std::size_t>(match.candidate)];
-  const FlowPrototype& p = prototypes_[static_cast<std::size_t>(type)];
-  StrokeFrame frame = p.frames[static_cast<std::size_t>(rotation)];
-  frame.reflection = match.reflection;
-  const double extent = frame.alongMax - frame.alongMin;
-  const double lengthScale = polylineLength(spine) / extent;
-  const double maxEdge = extent / 100.0;
-  frame.widthScale = fitWidthScale(p.outline, frame, spine, space, maxEdge, kMaxWidthOverLengthScale * lengthScale);
-  if (!(frame.widthScale > 0.0)) return best;
-  Region outline = bendRegion(p.outline, frame, spine, maxEdge);
-  // A turn sharper than the element is wide folds it over itself (thesis 3.5): no placement
-  // here (narrowing it instead fills no more: docs/flowpak.md).
-  if (!options_.keepFolds && foldsOverItself(outline, p.outline)) return best;
-  best.ok = true;
-  best.type = type;
-  best.frame = frame;
-  best.streamline = spine;
-  best.outline = std::move(outline);
-  best.area = area(best.outline);
-  return best;
+  // A turn sharper than the element is wide folds it over itself (thesis 3.5): the spine is
+  // cut at its sharpest turn and the longer part tried, a few times, else no placement here
+  // (narrowing the element or trying the next best instead fill no more: docs/flowpak.md).
+  constexpr int kCuts = 4;
+  for (int cut = 0;; ++cut) {
+    if (spine.size() < 2 || polylineLength(spine) < 0.25 * options_.minLength) return best;
+    LRFunction blobLR = blobLRFunction(space, spine, options_.lrSamples);
+    LRMatch match = bestMatch(candidates, blobLR);
+    if (match.candidate < 0) return best;
+    auto [type, rotation] = which[static_cast<std::size_t>(match.candidate)];
+    const FlowPrototype& p = prototypes_[static_cast<std::size_t>(type)];
+    StrokeFrame frame = p.frames[static_cast<std::size_t>(rotation)];
+    frame.reflection = match.reflection;
+    const double extent = frame.alongMax - frame.alongMin;
+    const double lengthScale = polylineLength(spine) / extent;
+    const double maxEdge = extent / 100.0;
+    frame.widthScale = fitWidthScale(p.outline, frame, spine, space, maxEdge, kMaxWidthOverLengthScale * lengthScale);
+    if (!(frame.widthScale > 0.0)) return best;
+    Region outline = bendRegion(p.outline, frame, spine, maxEdge);
+    if (!options_.keepFolds && (foldsOverItself(outline, p.outline) ||
+                                artFoldsOverItself(bendShapes(p.art->shapes, frame, spine, maxEdge), p.art->shapes))) {
+      if (cut == kCuts || e.fixedSpine) return best;
+      spine = longerSideOfSharpestTurn(spine, 2.0 * options_.sampleSpacing);
+      continue;
+    }
+    best.ok = true;
+    best.type = type;
+    best.frame = frame;
+    best.streamline = spine;
+    best.outline = std::move(outline);
+    best.area = area(best.outline);
+    return best;
+  }
 }
 
 void FlowPacker::accept(std::size_t i, const Placement& p) {

@@ -42,8 +42,9 @@ struct FlowOptions {
   double growthTolerance = 0.9;  // α: a new placement is kept if its area ≥ α × the old one
   double growthLimit = 5.0;      // g_limit (0.005 l_canvas)
   int maxRotationDegrees = 10;   // rotations ±1°…±max° tried during refinement
-  // A bent element whose outline would cross itself (a turn sharper than it is wide; thesis
-  // 3.5 leaves it as future work) is not placed there. true: kept folded, as in the thesis.
+  // A bent element whose outline or art would cross itself (a turn sharper than it is wide;
+  // thesis 3.5 leaves it as future work) goes on the longer side of the spine's sharpest
+  // turn, or is not placed there. true: kept folded, as in the thesis.
   bool keepFolds = false;
   double shiftDistanceWeight = 0.1;  // w_d (eq. 3.2)
   double shiftFieldWeight = 1.0;     // w_f
