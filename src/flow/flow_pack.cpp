@@ -183,6 +183,9 @@ void FlowPacker::setUp() {
     Region side{options_.mirror->packedSide(centre, reach)};
     normalizeOrientation(side);
     for (Region& r : regions) r = intersect(r, side);
+    if (std::all_of(regions.begin(), regions.end(), [](const Region& r) { return r.empty(); }))
+      throw InputError("--mirror", "the line leaves no part of the containers on its packed side (the left of x=…, "
+                                   "above y=…, or left of the walk from the first point to the second)");
   }
   packing_.fixedArt = setup_.fixedPainted;
   packing_.containers = regions;

@@ -148,6 +148,7 @@ TEST(CliFlow, BadInputIsOneErrorLineAndExitTwo) {
   for (const std::string& args :
        {"flow " + shellQuoted(noGuides) + " -e examples/flow/elements -o " + out,
         "flow examples/flow/koi.svg -e examples/flow/elements -o " + out + " --mirror z=3",
+        "flow examples/flow/koi.svg -e examples/flow/elements -o " + out + " --mirror x=10",
         "flow examples/flow/koi.svg -e examples/flow/elements -o " + out + " --mirror 1,2,1,2",
         "flow examples/flow/koi.svg -e examples/flow/elements -o " + out + " --gap -4",
         "flow examples/flow/koi.svg -e examples/flow/elements -o " + out + " --min-length 500 --max-length 100",
