@@ -95,6 +95,7 @@ struct Placement {
   StrokeFrame frame;
   Polyline streamline;
   Region outline;
+  std::vector<Shape> art;  // bent, paint kept
   double area = 0.0;
 };
 
@@ -313,24 +314,21 @@ Region FlowPacker::placementSpace(std::size_t i, const Region& blob) const {
 }
 
 namespace {
-// Whether a ring of the bent outline crosses itself where the same ring as drawn does not.
-bool foldsOverItself(const Region& bent, const Region& drawn) {
-  if (bent.size() != drawn.size()) return false;
-  for (std::size_t k = 0; k < bent.size(); ++k) {
-    if (ringSelfIntersects(bent[k].outer) && !ringSelfIntersects(drawn[k].outer)) return true;
-    for (std::size_t h = 0; h < bent[k].holes.size() && h < drawn[k].holes.size(); ++h)
-      if (ringSelfIntersects(bent[k].holes[h]) && !ringSelfIntersects(drawn[k].holes[h])) return true;
-  }
+// A fold: a ring of `bent` crosses itself where the same ring of `drawn` does not (as the
+// report counts them, checkSelfIntersections).
+bool foldsOverItself(const std::vector<Ring>& bent, const std::vector<Ring>& drawn) {
+  for (std::size_t k = 0; k < bent.size() && k < drawn.size(); ++k)
+    if (ringSelfIntersects(bent[k]) && !ringSelfIntersects(drawn[k])) return true;
   return false;
 }
 
-// Whether a filled ring of the bent art crosses itself where the same ring as drawn does not
-// (what the report counts; the outline alone can miss a fold of a part inside it).
-bool artFoldsOverItself(const std::vector<Shape>& bent, const std::vector<Shape>& drawn) {
-  const std::vector<Ring> rings = artRings(bent), rest = artRings(drawn);
-  for (std::size_t k = 0; k < rings.size() && k < rest.size(); ++k)
-    if (ringSelfIntersects(rings[k]) && !ringSelfIntersects(rest[k])) return true;
-  return false;
+std::vector<Ring> ringsOf(const Region& region) {
+  std::vector<Ring> rings;
+  for (const Polygon& polygon : region) {
+    rings.push_back(polygon.outer);
+    rings.insert(rings.end(), polygon.holes.begin(), polygon.holes.end());
+  }
+  return rings;
 }
 
 // The longer of the two parts of `line` on either side of its sharpest turn: the vertex where
@@ -399,8 +397,10 @@ Placement FlowPacker::place(const FlowElement& e, const Region& spaceAll, const 
     frame.widthScale = fitWidthScale(p.outline, frame, spine, space, maxEdge, kMaxWidthOverLengthScale * lengthScale);
     if (!(frame.widthScale > 0.0)) return best;
     Region outline = bendRegion(p.outline, frame, spine, maxEdge);
-    if (!options_.keepFolds && (foldsOverItself(outline, p.outline) ||
-                                artFoldsOverItself(bendShapes(p.art->shapes, frame, spine, maxEdge), p.art->shapes))) {
+    std::vector<Shape> art = bendShapes(p.art->shapes, frame, spine, maxEdge);
+    // The outline, and the art: the outline alone can miss a fold of a part inside it.
+    if (!options_.keepFolds && (foldsOverItself(ringsOf(outline), ringsOf(p.outline)) ||
+                                foldsOverItself(artRings(art), artRings(p.art->shapes)))) {
       if (cut == kCuts || e.fixedSpine) return best;
       spine = longerSideOfSharpestTurn(spine, 2.0 * options_.sampleSpacing);
       continue;
@@ -410,6 +410,7 @@ Placement FlowPacker::place(const FlowElement& e, const Region& spaceAll, const 
     best.frame = frame;
     best.streamline = spine;
     best.outline = std::move(outline);
+    best.art = std::move(art);
     best.area = area(best.outline);
     return best;
   }
@@ -424,8 +425,7 @@ void FlowPacker::accept(std::size_t i, const Placement& p) {
   e.streamline = p.streamline;
   e.outline = p.outline;
   e.area = p.area;
-  const double extent = p.frame.alongMax - p.frame.alongMin;
-  e.art = bendShapes(proto.art->shapes, p.frame, p.streamline, extent / 100.0);
+  e.art = p.art;
   skins_[i] = options_.spacing > 0.0 ? offset(e.outline, options_.spacing) : e.outline;
 }
 
