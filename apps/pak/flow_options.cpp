@@ -9,15 +9,16 @@ namespace {
 OptionTable<FlowOptions> flowOptionTable() {
   using O = FlowOptions;
   OptionTable<O> own{
-      {"gap", field(&O::gap), "s_gap, the distance between neighbouring streamlines, about an element's width (canonical units: l_canvas, the larger side of the containers' bounds, is 1000)"},
-      {"min-length", field(&O::minLength), "s_min: shorter streamlines get no element (canonical units)"},
-      {"max-length", field(&O::maxLength), "s_max: streamlines stop before this length (canonical units)"},
+      {"count", field(&O::count), "about how many elements the automatic --gap aims for (in the whole output, both halves under --mirror)"},
+      {"gap", field(&O::gap), "s_gap, the distance between neighbouring streamlines, about an element's width (canonical units: l_canvas, the larger side of the containers' bounds, is 1000); 0: worked out from --count, the free area and the elements' proportions"},
+      {"min-length", field(&O::minLength), "s_min: shorter streamlines get no element (canonical units); 0: in proportion to the gap and the elements' median length-to-width ratio (the report's density gives the value used)"},
+      {"max-length", field(&O::maxLength), "s_max: streamlines stop before this length (canonical units); 0: in proportion to the gap and that ratio"},
       {"stop-ratio", field(&O::stopRatio), "s_stop = ratio × s_gap: a streamline stops this close to another"},
       {"sample-spacing", field(&O::sampleSpacing), "sampling of guides, boundaries and streamlines (canonical units; thesis 0.005 l_canvas)"},
       {"field-resolution", field(&O::fieldResolution), "vector field grid cells along the longer side"},
       {"blob-resolution", field(&O::blobResolution), "blob (Voronoi) grid cells along the longer side"},
       {"lr-samples", field(&O::lrSamples), "n_f, samples of the LR functions"},
-      {"spacing", field(&O::spacing), "space kept between elements, and between elements and walls (canonical units)"},
+      {"spacing", field(&O::spacing), "space kept between elements, and between elements and walls (canonical units); negative: in proportion to the gap"},
       {"iterations", field(&O::iterations), "refinement iterations (Algorithm 2)"},
       {"growth-tolerance", field(&O::growthTolerance), "α: a refined placement is kept when its area is at least α × the old one"},
       {"growth-limit", field(&O::growthLimit), "g_limit: how far a streamline end or a blob moves per iteration (canonical units)"},

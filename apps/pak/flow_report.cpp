@@ -47,6 +47,11 @@ nlohmann::json flowReport(const FlowArguments& args, const FlowPacking& packing,
   report["output-points"] = paths.points;  // every path's coordinate pairs, Bézier control points included
   report["output-largest-curve-deviation"] = paths.largestDeviation * packing.canonicalScale;
   report["canonical-scale"] = packing.canonicalScale;
+  // The density used (the options', or worked out when left automatic), canonical units.
+  report["density"] = {{"gap", packing.density.gap},
+                       {"min-length", packing.density.minLength},
+                       {"max-length", packing.density.maxLength},
+                       {"spacing", packing.density.spacing}};
   reportElementsPerContainer(report, packing.elements, packing.containers.size());
   return report;
 }

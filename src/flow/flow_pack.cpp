@@ -8,6 +8,7 @@
 #include <numeric>
 
 #include "flow/blobs.hpp"
+#include "flow/flow_density.hpp"
 #include "flow/flow_prototype.hpp"
 #include "flow/streamline_shift.hpp"
 #include "flow/streamlines.hpp"
@@ -15,6 +16,7 @@
 #include "pak/geom/clipping.hpp"
 #include "pak/geom/closest_point.hpp"
 #include "pak/geom/resample.hpp"
+#include "pak/geom/simplify.hpp"
 #include "pak/geom/verify.hpp"
 #include "pak/sim/packing.hpp"
 #include "sim/packing_setup.hpp"
@@ -29,20 +31,24 @@ double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(
 // The thesis lets the width grow "as wide as possible"; a cap on how much wider than the
 // length scale an element may become keeps a lone element in a wide blob recognisable.
 constexpr double kMaxWidthOverLengthScale = 2.5;
+// A skin is grown from its outline simplified within this share of the spacing (skinOf).
+constexpr double kSkinTolerance = 0.1;
 
 // Each error names the option as `pak flow` spells it (the flag is also the --config key).
 void validate(const FlowOptions& o) {
   auto positive = [](double v) { return std::isfinite(v) && v > 0.0; };
-  if (!positive(o.gap)) throw InputError("--gap", "must be a positive number");
+  auto automaticOrPositive = [](double v) { return std::isfinite(v) && v >= 0.0; };  // 0: automatic
+  if (o.count < 1 || o.count > 100000) throw InputError("--count", "must be 1 to 100000");
+  if (!automaticOrPositive(o.gap)) throw InputError("--gap", "must be a positive number (0: automatic)");
   if (!(o.stopRatio > 0.0 && o.stopRatio <= 1.0)) throw InputError("--stop-ratio", "must be in (0, 1]");
-  if (!positive(o.minLength)) throw InputError("--min-length", "must be a positive number");
-  if (!positive(o.maxLength) || o.minLength > o.maxLength)
-    throw InputError("--max-length", "must be a positive number, at least --min-length");
+  if (!automaticOrPositive(o.minLength)) throw InputError("--min-length", "must be a positive number (0: automatic)");
+  if (!automaticOrPositive(o.maxLength) || (o.maxLength > 0.0 && o.minLength > o.maxLength))
+    throw InputError("--max-length", "must be a positive number (0: automatic), at least --min-length");
   if (!positive(o.sampleSpacing)) throw InputError("--sample-spacing", "must be a positive number");
   if (o.fieldResolution < 8 || o.fieldResolution > 4096) throw InputError("--field-resolution", "must be 8 to 4096");
   if (o.blobResolution < 16 || o.blobResolution > 4096) throw InputError("--blob-resolution", "must be 16 to 4096");
   if (o.lrSamples < 4 || o.lrSamples > 10000) throw InputError("--lr-samples", "must be 4 to 10000");
-  if (!(std::isfinite(o.spacing) && o.spacing >= 0.0)) throw InputError("--spacing", "must be ≥ 0");
+  if (!std::isfinite(o.spacing)) throw InputError("--spacing", "must be a number (≥ 0; negative: automatic)");
   if (o.iterations < 0 || o.iterations > 10000) throw InputError("--iterations", "must be 0 to 10000");
   if (!(o.growthTolerance > 0.0 && o.growthTolerance <= 1.0)) throw InputError("--growth-tolerance", "must be in (0, 1]");
   if (!positive(o.growthLimit)) throw InputError("--growth-limit", "must be a positive number");
@@ -110,17 +116,19 @@ class FlowPacker {
   void setUp();
   void packContainer(int k);
   Placement place(const FlowElement& e, const Region& blob, const Polyline& streamline, bool allowRotation) const;
-  Region othersNear(std::size_t i, const Box& box, bool skins) const;
+  Region othersNear(std::size_t i, const Box& box) const;
   Region placementSpace(std::size_t i, const Region& blob) const;
+  Region placementSpace(const Region& blob, const Region& othersSkins) const;
+  Region skinOf(const Region& outline) const;
   void accept(std::size_t i, const Placement& p);
   // One element's refinement step, proposed from the current state (see refine).
   struct Step {
     Placement placement;
     Region blob;       // the grown blob (growing)
-    Box reach;         // every other element it read has skin bounds meeting this box
     bool tried = false;
-    std::size_t seen = 0;  // how many changes of the phase it was proposed after
   };
+  Box stepReach(std::size_t i) const;
+  std::vector<std::vector<std::size_t>> waves(const std::vector<std::size_t>& order) const;
   Step proposeShift(std::size_t i) const;
   Step proposeGrowth(std::size_t i) const;
   ShiftOptions shiftOptions() const;
@@ -172,10 +180,6 @@ void FlowPacker::setUp() {
   const double lCanvas = setup_.side;
   unit_ = lCanvas / 1000.0;
   packing_.canonicalScale = 1.0 / unit_;
-  // Distances in input units from here on.
-  for (double* d : {&options_.gap, &options_.minLength, &options_.maxLength, &options_.sampleSpacing,
-                    &options_.spacing, &options_.growthLimit, &options_.fillGapsInset})
-    *d *= unit_;
 
   std::vector<Region> regions = setup_.containers.regions;
   if (options_.mirror) {  // a square reaching past the containers on the packed side
@@ -193,9 +197,22 @@ void FlowPacker::setUp() {
   packing_.container = unite(regions);
   packing_.freeSpace = subtract(packing_.container, packing_.fixedArt);
   if (area(packing_.freeSpace) <= 0.0) throw InputError(scene_.source, "the fixed elements leave no free space");
-  freeShrunk_ = options_.spacing > 0.0 ? offset(packing_.freeSpace, -0.5 * options_.spacing) : packing_.freeSpace;
 
-  for (const ElementArt& e : *types_) prototypes_.push_back(flowPrototype(e, options_.maxRotationDegrees, options_.lrSamples));
+  std::vector<double> aspects;
+  for (const ElementArt& e : *types_) {
+    const FlowPrototype& p = prototypes_.emplace_back(flowPrototype(e, options_.maxRotationDegrees, options_.lrSamples));
+    aspects.push_back(p.lr[0].length / (p.lr[0].maxLeft + p.lr[0].maxRight));
+  }
+  packing_.density = resolveDensity(options_, area(packing_.freeSpace) / (unit_ * unit_), medianAspect(aspects));
+  options_.gap = packing_.density.gap;
+  options_.minLength = packing_.density.minLength;
+  options_.maxLength = packing_.density.maxLength;
+  options_.spacing = packing_.density.spacing;
+  // Distances in input units from here on.
+  for (double* d : {&options_.gap, &options_.minLength, &options_.maxLength, &options_.sampleSpacing,
+                    &options_.spacing, &options_.growthLimit, &options_.fillGapsInset})
+    *d *= unit_;
+  freeShrunk_ = options_.spacing > 0.0 ? offset(packing_.freeSpace, -0.5 * options_.spacing) : packing_.freeSpace;
 }
 
 void FlowPacker::report(const std::string& phase, int iteration) {
@@ -293,14 +310,11 @@ void FlowPacker::packContainer(int k) {
   packing_.seconds.placement += secondsSince(t);
 }
 
-// The other elements' outlines (or skins) whose bounds meet `box`, as one region.
-Region FlowPacker::othersNear(std::size_t i, const Box& box, bool skins) const {
+// The other elements' skins whose bounds meet `box`, as one region.
+Region FlowPacker::othersNear(std::size_t i, const Box& box) const {
   std::vector<Region> near;
-  for (std::size_t j = 0; j < packing_.elements.size(); ++j) {
-    if (j == i) continue;
-    const Region& r = skins ? skins_[j] : packing_.elements[j].outline;
-    if (!r.empty() && bounds(r).overlaps(box)) near.push_back(r);
-  }
+  for (std::size_t j = 0; j < packing_.elements.size(); ++j)
+    if (j != i && !skins_[j].empty() && bounds(skins_[j]).overlaps(box)) near.push_back(skins_[j]);
   return unite(near);
 }
 
@@ -309,8 +323,13 @@ Region FlowPacker::othersNear(std::size_t i, const Box& box, bool skins) const {
 Region FlowPacker::placementSpace(std::size_t i, const Region& blob) const {
   Region space = intersect(blob, freeShrunk_);
   if (space.empty()) return space;
-  Box box = bounds(space);
-  return subtract(space, othersNear(i, box, true));
+  return subtract(space, othersNear(i, bounds(space)));
+}
+
+// The same, given the others' skins around the whole blob (gathered once per step).
+Region FlowPacker::placementSpace(const Region& blob, const Region& othersSkins) const {
+  Region space = intersect(blob, freeShrunk_);
+  return space.empty() ? space : subtract(space, othersSkins);
 }
 
 namespace {
@@ -416,6 +435,15 @@ Placement FlowPacker::place(const FlowElement& e, const Region& spaceAll, const 
   }
 }
 
+// The outline grown by `spacing`: what the other elements keep out of. Grown from the outline
+// simplified within a tenth of the spacing, and by that much more, it holds the exact offset
+// with about a tenth of the vertices (every boolean near the element reads it).
+Region FlowPacker::skinOf(const Region& outline) const {
+  if (!(options_.spacing > 0.0)) return outline;
+  const double tolerance = kSkinTolerance * options_.spacing;
+  return offset(simplifyRegion(outline, tolerance), options_.spacing + tolerance);
+}
+
 void FlowPacker::accept(std::size_t i, const Placement& p) {
   FlowElement& e = packing_.elements[i];
   const FlowPrototype& proto = prototypes_[static_cast<std::size_t>(p.type)];
@@ -426,18 +454,17 @@ void FlowPacker::accept(std::size_t i, const Placement& p) {
   e.outline = p.outline;
   e.area = p.area;
   e.art = p.art;
-  skins_[i] = options_.spacing > 0.0 ? offset(e.outline, options_.spacing) : e.outline;
+  skins_[i] = skinOf(e.outline);
 }
 
 // Algorithm 2: each iteration shifts every streamline, then grows every blob, smallest
 // elements first, keeping a new placement when its area is at least α times the old one.
 //
-// In parallel, with the sequential result: every element's step is first proposed from the
-// state at the start of the phase, on all threads; then the steps are taken in order, and a
-// proposal is used only if no element taken before it in this phase changed within the
-// proposal's reach (all it read lies there). Else it is proposed again from the current
-// state. Either way each step sees what the sequential loop would, so the result does not
-// depend on the thread count.
+// In parallel, with the sequential result: a phase's steps run in waves. A step joins the
+// first wave after those of every earlier step (in the sequential order) whose reach meets
+// its own; the steps of a wave are proposed together from the state the waves before left,
+// then taken. Each step thus sees exactly what the sequential loop would show it, so the
+// result does not depend on the thread count, and no work is thrown away.
 void FlowPacker::refine() {
   ThreadPool pool(options_.run.threads);
   auto smallestFirst = [&] {
@@ -447,49 +474,24 @@ void FlowPacker::refine() {
                      [&](std::size_t a, std::size_t b) { return packing_.elements[a].area < packing_.elements[b].area; });
     return order;
   };
-  std::vector<Step> proposals;
-  std::vector<Box> changed;  // skins' bounds, before and after, of the elements changed so far
-  std::vector<std::size_t> redo;
+  std::vector<Step> steps;
   auto phase = [&](bool shifting) {
-    const std::vector<std::size_t> order = smallestFirst();
-    auto propose = [&](std::size_t k) {
-      proposals[k] = shifting ? proposeShift(order[k]) : proposeGrowth(order[k]);
-      proposals[k].seen = changed.size();
-    };
-    // Whether a proposal still holds: nothing changed within its reach since it was made.
-    auto holds = [&](std::size_t k) {
-      return std::none_of(changed.begin() + static_cast<std::ptrdiff_t>(proposals[k].seen), changed.end(),
-                          [&](const Box& b) { return b.overlaps(proposals[k].reach); });
-    };
-    changed.clear();
-    proposals.assign(order.size(), Step{});
-    const std::size_t threads = static_cast<std::size_t>(pool.threadCount());
-    if (threads > 1)
-      pool.parallelFor(order.size(), 1, [&](std::size_t begin, std::size_t end) {
-        for (std::size_t k = begin; k < end; ++k) propose(k);
+    steps.assign(packing_.elements.size(), Step{});
+    for (const std::vector<std::size_t>& wave : waves(smallestFirst())) {
+      pool.parallelFor(wave.size(), 1, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t k = begin; k < end; ++k)
+          steps[wave[k]] = shifting ? proposeShift(wave[k]) : proposeGrowth(wave[k]);
       });
-    for (std::size_t k = 0; k < order.size(); ++k) {
-      if (threads == 1) {
-        propose(k);
-      } else if (!holds(k)) {  // it and the next ones that no longer hold, proposed again together
-        redo.clear();
-        for (std::size_t m = k; m < order.size() && redo.size() < threads; ++m)
-          if (m == k || !holds(m)) redo.push_back(m);
-        pool.parallelFor(redo.size(), 1, [&](std::size_t begin, std::size_t end) {
-          for (std::size_t r = begin; r < end; ++r) propose(redo[r]);
-        });
-      }
-      Step& step = proposals[k];
-      const std::size_t i = order[k];
-      FlowElement& e = packing_.elements[i];
-      if (!shifting) e.blob = std::move(step.blob);  // kept grown whether or not the element is
-      if (!step.tried) continue;
-      ++packing_.placementsTried;
-      if (step.placement.ok && step.placement.area >= options_.growthTolerance * e.area) {
-        changed.push_back(bounds(skins_[i]));
-        accept(i, step.placement);
-        changed.push_back(bounds(skins_[i]));
-        ++packing_.placementsAccepted;
+      for (std::size_t i : wave) {
+        Step& step = steps[i];
+        FlowElement& e = packing_.elements[i];
+        if (!shifting) e.blob = std::move(step.blob);  // kept grown whether or not the element is
+        if (!step.tried) continue;
+        ++packing_.placementsTried;
+        if (step.placement.ok && step.placement.area >= options_.growthTolerance * e.area) {
+          accept(i, step.placement);
+          ++packing_.placementsAccepted;
+        }
       }
     }
   };
@@ -503,22 +505,51 @@ void FlowPacker::refine() {
   }
 }
 
+// Everything a step of element i reads (the others' skins whose bounds meet this box) or
+// changes (its blob, its skin before and after) lies in this box: the new outline stays in the
+// blob grown by at most g_limit, and its skin reaches spacing and twice the simplification
+// tolerance beyond.
+Box FlowPacker::stepReach(std::size_t i) const {
+  Box box = bounds(packing_.elements[i].blob);
+  if (!skins_[i].empty()) box.add(bounds(skins_[i]));
+  if (box.empty()) return box;
+  const double margin = options_.spacing * (1.0 + 2.0 * kSkinTolerance) + 2.0 * options_.growthLimit;
+  box.min -= Vec2{margin, margin};
+  box.max += Vec2{margin, margin};
+  return box;
+}
+
+// The steps of `order` in waves: each step one wave after the latest earlier step whose reach
+// meets its own (steps of one wave are independent of each other and of every later wave's
+// earlier-ordered steps).
+std::vector<std::vector<std::size_t>> FlowPacker::waves(const std::vector<std::size_t>& order) const {
+  std::vector<Box> reach(order.size());
+  std::vector<std::size_t> wave(order.size(), 0);
+  std::vector<std::vector<std::size_t>> out;
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    reach[k] = stepReach(order[k]);
+    for (std::size_t j = 0; j < k; ++j)
+      if (reach[j].overlaps(reach[k])) wave[k] = std::max(wave[k], wave[j] + 1);
+    if (wave[k] == out.size()) out.emplace_back();
+    out[wave[k]].push_back(order[k]);
+  }
+  return out;
+}
+
 // Element i's streamline shifted (eq. 3.2) and the element placed on it again.
 FlowPacker::Step FlowPacker::proposeShift(std::size_t i) const {
   Step step;
   const FlowElement& e = packing_.elements[i];
   if (e.fixedSpine) return step;
   const VectorField& field = packing_.fields[static_cast<std::size_t>(e.container)];
-  Box box = bounds(e.blob);
-  box.min -= Vec2{1.0, 1.0} * (options_.gap + options_.growthLimit);
-  box.max += Vec2{1.0, 1.0} * (options_.gap + options_.growthLimit);
-  step.reach = box;  // the placement space reads within the blob's bounds, inside this box
-  Region occupied = othersNear(i, box, true);
+  // The placement space reads within the blob, the shifted path's lattice spans the blob's
+  // widths: the others further off than the step's reach do not bear on it.
+  const Region occupied = othersNear(i, stepReach(i));
   LRFunction widths = blobLRFunction(e.blob, e.streamline, options_.lrSamples);
   Polyline shifted = shiftStreamline(e.streamline, field, occupied, packing_.freeSpace, widths.maxLeft, widths.maxRight,
                                      shiftOptions());
   shifted = extendToBlob(shifted, e.blob, field, 0.5 * options_.sampleSpacing);
-  step.placement = place(e, placementSpace(i, e.blob), shifted, true);
+  step.placement = place(e, placementSpace(e.blob, occupied), shifted, true);
   step.tried = true;
   return step;
 }
@@ -528,14 +559,13 @@ FlowPacker::Step FlowPacker::proposeGrowth(std::size_t i) const {
   Step step;
   const FlowElement& e = packing_.elements[i];
   const VectorField& field = packing_.fields[static_cast<std::size_t>(e.container)];
-  Box box = bounds(e.blob);
-  box.min -= Vec2{1.0, 1.0} * (options_.spacing + 2.0 * options_.growthLimit);
-  box.max += Vec2{1.0, 1.0} * (options_.spacing + 2.0 * options_.growthLimit);
-  step.blob = growBlob(e.blob, othersNear(i, box, false), packing_.freeSpace, options_.growthLimit);
-  step.reach = box;
-  if (!step.blob.empty()) step.reach.add(bounds(step.blob));  // the placement space reads there
+  // Grown up to the others' skins, not their outlines: a blob that crept through the channels
+  // between them would wrap around its neighbours, as large as no element can use and slower
+  // with every iteration (docs/flowpak.md, "Speed").
+  const Region occupied = othersNear(i, stepReach(i));
+  step.blob = growBlob(e.blob, occupied, packing_.freeSpace, options_.growthLimit);
   Polyline extended = e.fixedSpine ? e.streamline : extendToBlob(e.streamline, step.blob, field, 0.5 * options_.sampleSpacing);
-  step.placement = place(e, placementSpace(i, step.blob), extended, true);
+  step.placement = place(e, placementSpace(step.blob, occupied), extended, true);
   step.tried = true;
   return step;
 }

@@ -21,7 +21,12 @@ TEST(CliFlow, KoiIsPackedWithoutOverlapsAndReported) {
                       " --snapshots " + shellQuoted(dir.file("snaps")) + " --debug-layers");
   ASSERT_EQ(run.exitCode, 0) << run.err;
   auto report = nlohmann::json::parse(readWholeFile(dir.file("koi.json")));
-  EXPECT_GE(report["element-count"].get<int>(), 8);
+  // Ornament by default (issue 16): about --count 100 elements, at the density reported.
+  EXPECT_GE(report["element-count"].get<int>(), 80);
+  EXPECT_LE(report["element-count"].get<int>(), 150);
+  EXPECT_NEAR(report["density"]["gap"].get<double>(), 21.3, 0.5);
+  EXPECT_GT(report["density"]["max-length"].get<double>(), report["density"]["min-length"].get<double>());
+  EXPECT_GT(report["density"]["spacing"].get<double>(), 0.0);
   EXPECT_EQ(report["overlap-count"], 0);
   EXPECT_EQ(report["elements-outside"], 0);
   EXPECT_EQ(report["self-intersecting-outlines"], 0) << report["problems"];

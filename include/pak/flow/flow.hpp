@@ -24,19 +24,22 @@
 namespace pak {
 
 struct FlowOptions {
+  // --- density: 0 (a negative spacing) leaves a value to Pak, which picks the gap that gives
+  // about `count` elements and lengths and spacing in proportion (FlowPacking::density)
+  int count = 100;            // elements wanted, about (in the output, both halves under a mirror)
+  double gap = 0.0;           // s_gap: desired space between streamlines, about an element's width
+  double minLength = 0.0;     // s_min
+  double maxLength = 0.0;     // s_max
+  // Space kept between neighbouring elements and between an element and the walls/fixed
+  // elements (the thesis's blobs touch; a margin keeps the negative space visible).
+  double spacing = -1.0;
   // --- streamlines (3.3.3)
-  double gap = 45.0;          // s_gap: desired space between streamlines, about an element's width
   double stopRatio = 0.8;     // s_stop = stopRatio × s_gap
-  double minLength = 60.0;    // s_min
-  double maxLength = 250.0;   // s_max
   double sampleSpacing = 5.0; // guide, boundary and streamline sampling (0.005 l_canvas)
   int fieldResolution = 256;  // vector field grid cells along the longer side
   // --- blobs and placement (3.3.4, 3.3.5)
   int blobResolution = 512;   // Voronoi grid cells along the longer side
   int lrSamples = 100;        // n_f
-  // Space kept between neighbouring elements and between an element and the walls/fixed
-  // elements (the thesis's blobs touch; a margin keeps the negative space visible).
-  double spacing = 6.0;
   // --- refinement (3.3.6, Algorithm 2)
   int iterations = 15;
   double growthTolerance = 0.9;  // α: a new placement is kept if its area ≥ α × the old one
@@ -86,6 +89,11 @@ struct FlowElement {
   double area = 0.0;
 };
 
+// The density a run used, canonical units: the options' values, or what Pak worked out.
+struct FlowDensity {
+  double gap = 0.0, minLength = 0.0, maxLength = 0.0, spacing = 0.0;
+};
+
 struct FlowPhaseTimes {
   double field = 0.0, streamlines = 0.0, blobs = 0.0, placement = 0.0, refinement = 0.0, extras = 0.0;
 };
@@ -100,6 +108,7 @@ struct FlowPacking {
   std::vector<VectorField> fields;  // one per container
   std::vector<Polyline> streamlines;  // as first traced (before extension), all containers
   double canonicalScale = 1.0;  // canonical units per input unit
+  FlowDensity density;
   int iterations = 0;
   // Placements tried and accepted during refinement (shift and growth phases together).
   int placementsTried = 0, placementsAccepted = 0;
