@@ -3,7 +3,8 @@ JOBS ?= $(shell nproc)
 RELEASE_DIR := build/release
 TEST_DIR := build/test
 
-.PHONY: all deps release demo test bench clean
+.PHONY: all deps release demo test bench install clean
+PREFIX ?= /usr/local
 
 all: release
 
@@ -27,6 +28,11 @@ test: deps
 	  -DPAK_ASSERTIONS=ON -DPAK_BUILD_BENCH=OFF > /dev/null
 	@cmake --build $(TEST_DIR) -j $(JOBS)
 	@cd $(TEST_DIR) && ASAN_OPTIONS=detect_leaks=1 ctest --output-on-failure -j $(JOBS)
+
+# pak, its man pages and bash completion under PREFIX (bin/, share/man/man1/,
+# share/bash-completion/completions/): `make install PREFIX=$$HOME/.local` needs no root.
+install: release
+	@cmake --install $(RELEASE_DIR) --prefix $(PREFIX)
 
 # Whole-run benchmark scenes; appends rows to bench/results.csv.
 bench: release

@@ -14,6 +14,7 @@ packages=(
   libcgif-dev           # GIF output
   libcli11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  help2man              # man pages from each command's --help (make install)
 )
 
 missing=()

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <exception>
 #include <iostream>
+#include <string>
 
 #include "command.hpp"
 #include "pak/error.hpp"
@@ -15,11 +16,39 @@ std::vector<Command>& commandRegistry() {
 }
 }  // namespace pak::cli
 
+namespace {
+bool hasCommand(CLI::App& app, const std::string& name) {
+  for (CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; }))
+    if (sub->get_name() == name) return true;
+  return false;
+}
+
+// `pak help [COMMAND]`: the same text as `pak [COMMAND] --help`.
+int printHelp(CLI::App& app, const std::string& name, bool extra) {
+  if (extra) {
+    std::fprintf(stderr, "pak: error: help takes at most one command (see pak help)\n");
+    return 2;
+  }
+  if (name.empty()) {
+    std::cout << app.help();
+    return 0;
+  }
+  if (!hasCommand(app, name)) {
+    std::fprintf(stderr, "pak: error: help: no command '%s'; the commands are %s\n", name.c_str(),
+                 pak::cli::commandList(app).c_str());
+    return 2;
+  }
+  std::cout << app.get_subcommand(name)->help();
+  return 0;
+}
+}  // namespace
+
 int main(int argc, char** argv) {
   using namespace pak::cli;
   CLI::App app{"Pak fills container shapes with deformable elements (RepulsionPak, FLOWPAK, "
-               "AnimationPak) and measures packings.\nRun `pak <command> --help` for details."};
-  app.set_version_flag("--version", std::string("pak ") + PAK_VERSION);
+               "AnimationPak) and measures packings.\nRun `pak help <command>` or `pak <command> --help` for details.",
+               "pak"};  // named, so that usage lines say `pak`, not the path it was run by
+  app.set_version_flag("-V,--version", std::string("pak ") + PAK_VERSION);
   app.require_subcommand(1);
   // Static registration order is unspecified across files; sort for a stable --help.
   auto& commands = commandRegistry();
@@ -31,6 +60,12 @@ int main(int argc, char** argv) {
     for (auto* sub : app.get_subcommands([](CLI::App*) { return true; }))
       if (sub->get_name() == command.name) before = sub;
     actions.emplace_back(before, std::move(action));
+  }
+  if (argc >= 2 && std::string(argv[1]) == "help") return printHelp(app, argc > 2 ? argv[2] : "", argc > 3);
+  if (argc >= 2 && argv[1][0] != '-' && !hasCommand(app, argv[1])) {
+    std::fprintf(stderr, "pak: error: no command '%s'; the commands are %s (see pak help)\n", argv[1],
+                 commandList(app).c_str());
+    return 2;
   }
   try {
     app.parse(argc, argv);

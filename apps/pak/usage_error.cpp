@@ -47,14 +47,16 @@ std::string usageErrorMessage(const CLI::App& app, const CLI::ParseError& error)
       if (word.size() > 1 && word[0] == '-') return word + ": not an option of this command (see --help)";
     return "unexpected argument " + match[1].str() + " (see --help)";
   }
-  if (text == "A subcommand is required") {
-    std::string names;
-    const auto commands = app.get_subcommands([](const CLI::App*) { return true; });
-    for (std::size_t i = 0; i < commands.size(); ++i)
-      names += (i == 0 ? "" : i + 1 == commands.size() ? " or " : ", ") + commands[i]->get_name();
-    return "expected a command: " + names + " (see pak --help)";
-  }
+  if (text == "A subcommand is required") return "expected a command: " + commandList(app) + " (see pak help)";
   return text;
+}
+
+std::string commandList(const CLI::App& app) {
+  std::string names;
+  const auto commands = app.get_subcommands([](const CLI::App*) { return true; });
+  for (std::size_t i = 0; i < commands.size(); ++i)
+    names += (i == 0 ? "" : i + 1 == commands.size() ? " or " : ", ") + commands[i]->get_name();
+  return names;
 }
 
 }  // namespace pak::cli

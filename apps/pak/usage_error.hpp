@@ -10,4 +10,7 @@ namespace pak::cli {
 // 'abc' as an integer" for CLI11's "Could not convert: --count = abc", CLI11's own text else.
 std::string usageErrorMessage(const CLI::App& app, const CLI::ParseError& error);
 
+// The commands of `app`, "animate, flow … or render".
+std::string commandList(const CLI::App& app);
+
 }  // namespace pak::cli
