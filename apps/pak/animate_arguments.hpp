@@ -15,6 +15,7 @@ struct AnimateArguments {
   int frames = 0, width = 480, sheetFrames = 5, svgKeyframes = 60, evennessFrames = 10;
   double pngAt = 0.0;  // t of the --png preview
   bool pngFrames = false, svgFrames = false, noGif = false;
+  bool polyline = false;  // SVG frames' outlines as polygons, not fitted Béziers
   AnimationOptions options;  // also --config keys and report parameters (animateOptions)
 };
 

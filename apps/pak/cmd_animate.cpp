@@ -11,6 +11,7 @@
 #include "command.hpp"
 #include "input_warnings.hpp"
 #include "mirror_option.hpp"
+#include "outline_output.hpp"
 #include "output_files.hpp"
 #include "run_eta.hpp"
 #include "pak/error.hpp"
@@ -137,6 +138,7 @@ int runAnimate(AnimateArguments& args, const CLI::App& command) {
   output.duration = script.duration;
   output.loop = script.loop;
   output.width = args.width;
+  output.svgCurveTolerance = outlineWriteOptions(args.polyline, kMeshCurveTolerance, animation.canonicalScale).curveTolerance;
 
   // Each frame's packing once: it is drawn, and checked below.
   std::vector<Packing> packings;
@@ -220,7 +222,8 @@ void declareAnimateOptions(CLI::App& command, AnimateArguments& args) {
   command.add_option("--width", args.width, "width in pixels of the GIF, PNG frames, video and contact-sheet cells")->capture_default_str();
   command.add_option("--png-at", args.pngAt, "with --png: the time t ∈ [0, 1] of the preview (any t, not only a frame's)")->capture_default_str();
   command.add_flag("--png-frames", args.pngFrames, "also write OUT/frames/frame-NNNN.png");
-  command.add_flag("--svg-frames", args.svgFrames, "also write OUT/svg-frames/frame-NNNN.svg");
+  command.add_flag("--svg-frames", args.svgFrames, "also write OUT/svg-frames/frame-NNNN.svg, outlines as cubic Béziers (the animated SVG keeps polygons, which it interpolates)");
+  command.add_flag("--polyline", args.polyline, polylineHelp(kMeshCurveTolerance) + " (in the SVG frames)");
   command.add_flag("--no-gif", args.noGif, "skip the GIF");
   command.add_option("--video", args.video, "also write a video, FILE.mp4 or FILE.webm (needs the ffmpeg program)");
   command.add_option("--evenness-frames", args.evennessFrames, "with --report: frames, spread over the animation, whose evenness (negative space, pocket share P2) is measured (0: none)")->capture_default_str();

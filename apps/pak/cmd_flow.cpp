@@ -9,6 +9,7 @@
 #include "flow_report.hpp"
 #include "input_warnings.hpp"
 #include "mirror_option.hpp"
+#include "outline_output.hpp"
 #include "output_files.hpp"
 #include "pak/error.hpp"
 #include "pak/io/atomic_file.hpp"
@@ -19,8 +20,6 @@
 namespace pak::cli {
 namespace {
 
-// How far the written Bézier outlines may stray from the bent polygons (canonical units).
-constexpr double kCurveTolerance = 0.4;
 
 int runFlow(FlowArguments& args, const CLI::App& command) {
   using Clock = std::chrono::steady_clock;
@@ -61,8 +60,7 @@ int runFlow(FlowArguments& args, const CLI::App& command) {
   FlowDrawingOptions drawingOptions;
   drawingOptions.debugLayers = common.debugLayers;
   Drawing drawing = flowDrawing(input.layout, packing, elements, drawingOptions);
-  SvgWriteOptions svgOptions;
-  if (!args.polyline) svgOptions.curveTolerance = kCurveTolerance / packing.canonicalScale;
+  const SvgWriteOptions svgOptions = outlineWriteOptions(args.polyline, kFlowCurveTolerance, packing.canonicalScale);
   SvgPathStats paths;
   writeSvgFile(drawing, common.output, svgOptions, &paths);
   writePngPreview(drawing, common.png, common.pngWidth);

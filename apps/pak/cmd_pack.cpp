@@ -9,6 +9,7 @@
 
 #include "command.hpp"
 #include "input_warnings.hpp"
+#include "outline_output.hpp"
 #include "output_files.hpp"
 #include "pack_arguments.hpp"
 #include "pack_report.hpp"
@@ -118,7 +119,9 @@ int runPack(PackArguments& args, const CLI::App& command) {
   PackingDrawingOptions drawingOptions;
   drawingOptions.debugLayers = common.debugLayers;
   Drawing drawing = packingDrawing(input.layout, packing, drawingOptions);
-  writeSvgFile(drawing, common.output);
+  SvgPathStats paths;
+  writeSvgFile(drawing, common.output, outlineWriteOptions(args.polyline, kMeshCurveTolerance, packing.canonicalScale),
+               &paths);
   writePngPreview(drawing, common.png, common.pngWidth);
   if (!args.tilePreview.empty()) {
     const int n = args.tilePreviewRepeat;
@@ -136,7 +139,7 @@ int runPack(PackArguments& args, const CLI::App& command) {
                  audit.check.elementsOutside, audit.check.selfIntersecting, audit.evenness.pocketShare[1],
                  formatSeconds(times.wall).c_str());
   if (!common.report.empty())
-    writeFileAtomically(common.report, packReport(args, scene, packing, audit, times).dump(2) + "\n");
+    writeFileAtomically(common.report, packReport(args, scene, packing, audit, times, paths).dump(2) + "\n");
   return 0;
 }
 

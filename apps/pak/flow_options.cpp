@@ -1,5 +1,6 @@
 // `pak flow`'s options, each declared once: flag, --config key, report parameter.
 #include "flow_arguments.hpp"
+#include "outline_output.hpp"
 #include "shared_options.hpp"
 
 namespace pak::cli {
@@ -39,7 +40,7 @@ OptionTable<FlowArguments> textOptionTable() {
   using A = FlowArguments;
   return {
       {"mirror", field(&A::mirror), "pack one side of a line and reflect it across (thesis Fig. 3.13): x=VALUE packs the part left of that vertical line, y=VALUE the part above that horizontal one, X1,Y1,X2,Y2 the part on the left of a walk from (X1, Y1) to (X2, Y2) as seen on screen (input units)"},
-      {"polyline", field(&A::polyline), "write outlines as polygons (the bent points), not as cubic Béziers fitted within 0.4 canonical units (thesis 3.4's post-process: curves to edit in Inkscape or Illustrator, smaller files); the report gives the point count and the fit's largest deviation"},
+      {"polyline", field(&A::polyline), polylineHelp(kFlowCurveTolerance) + " (thesis 3.4 post-processes its output into curves too)"},
   };
 }
 

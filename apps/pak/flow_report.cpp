@@ -1,5 +1,7 @@
 #include "flow_report.hpp"
 
+#include "outline_output.hpp"
+
 #include "art_check.hpp"
 #include "report_fields.hpp"
 #include "pak/sim/packing.hpp"
@@ -43,9 +45,7 @@ nlohmann::json flowReport(const FlowArguments& args, const FlowPacking& packing,
                        {"refinement", packing.seconds.refinement}, {"extras", packing.seconds.extras},
                        {"wall", wallSeconds}};
   reportCheck(report, check);
-  report["output-outlines"] = args.polyline ? "polygons" : "cubic Béziers";
-  report["output-points"] = paths.points;  // every path's coordinate pairs, Bézier control points included
-  report["output-largest-curve-deviation"] = paths.largestDeviation * packing.canonicalScale;
+  reportOutlines(report, args.polyline, paths, packing.canonicalScale);
   report["canonical-scale"] = packing.canonicalScale;
   // The density used (the options', or worked out when left automatic), canonical units.
   report["density"] = {{"gap", packing.density.gap},

@@ -22,6 +22,7 @@ struct PackArguments {
   bool rigid = false;
   std::string tile;  // W,H
   std::string orientation = "random", orientationField = "x:0:180", containerLayer = "container";
+  bool polyline = false;  // outlines as polygons, not fitted Béziers
   RepulsionOptions options;
 };
 

@@ -1,6 +1,7 @@
 // `pak pack`'s options, each declared once: flag, --config key, report parameter.
 #include "pack_arguments.hpp"
 #include "pak/repulsion/repulsion_presets.hpp"
+#include "outline_output.hpp"
 #include "shared_options.hpp"
 
 namespace pak::cli {
@@ -59,6 +60,7 @@ OptionTable<PackArguments> textOptionTable() {
       {"orientation", field(&A::orientation), "preferred orientation (eq. 4.6): random (random seeded angles, no torsion unless --k-torsion), upright (seeded as drawn and held there), field (seeded at and held to --orientation-field)"},
       {"orientation-field", field(&A::orientationField), "AXIS:FROM:TO, the rest angle in degrees (clockwise on screen, as SVG rotate) turning linearly from the container's left (x) or top (y) edge to the opposite one; alone it implies --orientation field"},
       {"container-layer", field(&A::containerLayer), "the scene layer holding the containers; 'elements' makes each element of a previous Pak packing a container"},
+      {"polyline", field(&A::polyline), polylineHelp(kMeshCurveTolerance)},
   };
 }
 

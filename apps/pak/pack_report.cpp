@@ -6,6 +6,7 @@
 #include <thread>
 
 #include "art_check.hpp"
+#include "outline_output.hpp"
 #include "pak/geom/closest_point.hpp"
 #include "pak/metrics/packing_geometry.hpp"
 #include "pak/repulsion/shape_matching.hpp"
@@ -85,7 +86,7 @@ PackAudit auditPacking(const Packing& packing, const Library& library, const Lib
 }
 
 nlohmann::json packReport(const PackArguments& args, const Scene& scene, const Packing& packing, const PackAudit& audit,
-                          const PackTimes& times) {
+                          const PackTimes& times, const SvgPathStats& paths) {
   const RepulsionOptions& options = args.options;
   nlohmann::json parameters;
   packOptions().report(parameters, args);
@@ -128,6 +129,7 @@ nlohmann::json packReport(const PackArguments& args, const Scene& scene, const P
   report["evenness"] = evennessJson(audit.evenness);
   report["primary-area-cv"] = audit.primaryAreaSpread;  // standard deviation / mean of the primaries' art areas
   report["canonical-scale"] = packing.canonicalScale;
+  reportOutlines(report, args.polyline, paths, packing.canonicalScale);
   reportElementsPerContainer(report, packing.elements, packing.containers.size());
   reportCorners(report, packing, audit.outlines);
   if (options.shapeMatching.enabled) {

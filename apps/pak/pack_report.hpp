@@ -6,6 +6,7 @@
 
 #include "pack_arguments.hpp"
 #include "pak/geom/verify.hpp"
+#include "pak/io/svg_writer.hpp"
 #include "pak/metrics/evenness.hpp"
 
 namespace pak::cli {
@@ -26,7 +27,8 @@ struct PackTimes {
   double wall = 0.0, simulation = 0.0;  // seconds
 };
 
+// `paths`: what the output SVG's paths hold (writeSvgFile).
 nlohmann::json packReport(const PackArguments& args, const Scene& scene, const Packing& packing, const PackAudit& audit,
-                          const PackTimes& times);
+                          const PackTimes& times, const SvgPathStats& paths);
 
 }  // namespace pak::cli

@@ -31,6 +31,7 @@ void writeSvgFrames(const std::vector<Drawing>& frames, const std::string& folde
   animation_frames::makeFolder(folder);
   SvgWriteOptions svg;
   if (options.svgPrecision >= 0) svg.precision = options.svgPrecision;
+  svg.curveTolerance = options.svgCurveTolerance;
   for (std::size_t i = 0; i < frames.size(); ++i)
     writeSvgFile(frames[i], framePath(folder, i, frames.size(), ".svg"), svg);
 }

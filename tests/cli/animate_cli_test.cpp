@@ -182,6 +182,8 @@ TEST(CliAnimate, TheFixedMoonIsInEveryFrameAndTheStarsKeepClearOfIt) {
   for (const char* name : {"frame-0000.svg", "frame-0005.svg"})
     EXPECT_NE(readWholeFile((dir.path() / "out" / "svg-frames" / name).string()).find("#f3efd2"), std::string::npos)
         << name << " draws the moon";
+  // SVG frames are written as curves (the animated SVG, which interpolates its paths, not).
+  EXPECT_NE(readWholeFile((dir.path() / "out" / "svg-frames" / "frame-0000.svg").string()).find(" C"), std::string::npos);
 }
 
 TEST(CliAnimate, TheSwallowFliesThroughTheCloudAndOutAndFramesTile) {

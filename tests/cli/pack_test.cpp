@@ -191,3 +191,28 @@ TEST(CliPack, WarnsAboutSkippedShapesInElementFiles) {
   ASSERT_EQ(flow.exitCode, 0) << flow.err;
   EXPECT_EQ(count(flow.err, "pak: warning: " + element), 1) << flow.err;
 }
+
+// Editable curves by default (issue 17): cubic Béziers fitted within 0.09 canonical units of
+// the deformed outlines, fewer points than the polygons, which --polyline writes as before.
+TEST(CliPack, OutlinesAreCurvesByDefaultAndPolygonsOnRequest) {
+  ScratchFolder dir("cli-pack-curves");
+  PakRun curves = runPak(kQuick + " -o " + shellQuoted(dir.file("c.svg")) + " --report " + shellQuoted(dir.file("c.json")));
+  PakRun polygons = runPak(kQuick + " --polyline -o " + shellQuoted(dir.file("p.svg")) + " --report " +
+                           shellQuoted(dir.file("p.json")));
+  ASSERT_EQ(curves.exitCode, 0) << curves.err;
+  ASSERT_EQ(polygons.exitCode, 0) << polygons.err;
+  const std::string curveSvg = readWholeFile(dir.file("c.svg")), polygonSvg = readWholeFile(dir.file("p.svg"));
+  EXPECT_GT(count(curveSvg, " C"), 6);
+  EXPECT_EQ(count(polygonSvg, " C"), 0);
+  auto c = nlohmann::json::parse(readWholeFile(dir.file("c.json")));
+  auto p = nlohmann::json::parse(readWholeFile(dir.file("p.json")));
+  EXPECT_EQ(c["output-outlines"], "cubic Béziers");
+  EXPECT_EQ(p["output-outlines"], "polygons");
+  EXPECT_LT(c["output-points"].get<int>(), p["output-points"].get<int>() * 3 / 4);
+  EXPECT_GT(c["output-largest-curve-deviation"].get<double>(), 0.0);
+  EXPECT_LE(c["output-largest-curve-deviation"].get<double>(), 0.1);
+  EXPECT_EQ(p["output-largest-curve-deviation"], 0.0);
+  // The same packing either way: only the way its outlines are written differs.
+  EXPECT_EQ(c["fill-ratio-art"], p["fill-ratio-art"]);
+  EXPECT_EQ(count(curveSvg, "data-source=\""), count(polygonSvg, "data-source=\""));
+}

@@ -20,6 +20,10 @@ struct AnimationOutputOptions {
   std::optional<Color> background = Color{255, 255, 255, 1.0};
   int svgPrecision = -1;   // SVG decimals; -1: SVG frames as the SVG writer, animated SVG from
                            // the view box size (about 1/10000 of it)
+  // SVG frames: > 0 writes outlines as cubic Béziers fitted within this distance (input units),
+  // as SvgWriteOptions::curveTolerance. The animated SVG keeps polygons: it interpolates `d`
+  // between keyframes, which needs the same points in every frame.
+  double svgCurveTolerance = 0.0;
 };
 
 // frame-0000.png, frame-0001.png … in `folder` (created if missing).
