@@ -15,6 +15,7 @@ packages=(
   libcli11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   help2man              # man pages from each command's --help (make install)
+  libxml2-utils         # xmllint: the tests check that every SVG is well-formed
 )
 
 missing=()

@@ -4,6 +4,7 @@
 #include <exception>
 #include <iostream>
 #include <string>
+#include <vector>
 
 #include "command.hpp"
 #include "pak/error.hpp"
@@ -23,23 +24,14 @@ bool hasCommand(CLI::App& app, const std::string& name) {
   return false;
 }
 
-// `pak help [COMMAND]`: the same text as `pak [COMMAND] --help`.
-int printHelp(CLI::App& app, const std::string& name, bool extra) {
-  if (extra) {
+// What is wrong with `pak help …`: a command it does not know (`name`), or more than one.
+int helpError(CLI::App& app, const std::string& name) {
+  if (name.empty())
     std::fprintf(stderr, "pak: error: help takes at most one command (see pak help)\n");
-    return 2;
-  }
-  if (name.empty()) {
-    std::cout << app.help();
-    return 0;
-  }
-  if (!hasCommand(app, name)) {
+  else
     std::fprintf(stderr, "pak: error: help: no command '%s'; the commands are %s\n", name.c_str(),
                  pak::cli::commandList(app).c_str());
-    return 2;
-  }
-  std::cout << app.get_subcommand(name)->help();
-  return 0;
+  return 2;
 }
 }  // namespace
 
@@ -61,7 +53,16 @@ int main(int argc, char** argv) {
       if (sub->get_name() == command.name) before = sub;
     actions.emplace_back(before, std::move(action));
   }
-  if (argc >= 2 && std::string(argv[1]) == "help") return printHelp(app, argc > 2 ? argv[2] : "", argc > 3);
+  // `pak help [COMMAND]` is `pak [COMMAND] --help`, parsed as such so the text is the same.
+  std::vector<char*> arguments(argv, argv + argc);
+  char helpFlag[] = "--help";
+  if (argc >= 2 && std::string(argv[1]) == "help") {
+    if (argc > 3 || (argc == 3 && !hasCommand(app, argv[2]))) return helpError(app, argc > 3 ? "" : argv[2]);
+    arguments.erase(arguments.begin() + 1);
+    arguments.push_back(helpFlag);
+    argc = static_cast<int>(arguments.size());
+    argv = arguments.data();
+  }
   if (argc >= 2 && argv[1][0] != '-' && !hasCommand(app, argv[1])) {
     std::fprintf(stderr, "pak: error: no command '%s'; the commands are %s (see pak help)\n", argv[1],
                  commandList(app).c_str());

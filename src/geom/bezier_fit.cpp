@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "pak/error.hpp"
@@ -88,6 +89,8 @@ CubicBezier leastSquaresCurve(const std::vector<Vec2>& p, std::size_t first, std
   return {a, a + t1 * alphaA, b + t2 * alphaB, b};
 }
 
+double distanceToSegment(Vec2 q, Vec2 a, Vec2 b) { return distance(q, closestPointOnSegment(q, a, b)); }
+
 // Largest squared distance between a point and the curve at its parameter, over the interior
 // points; `worst` receives the index of that point.
 double maxSquaredError(const std::vector<Vec2>& p, std::size_t first, std::size_t last, const CubicBezier& c,
@@ -99,6 +102,19 @@ double maxSquaredError(const std::vector<Vec2>& p, std::size_t first, std::size_
     if (d > best) { best = d; worst = i; }
   }
   return best;
+}
+
+// Whether the curve strays further than `tolerance` from the polyline p[first..last] anywhere:
+// Schneider checks the points only, and between them a curve can bow off the polygon.
+bool bowsOff(const CubicBezier& c, const std::vector<Vec2>& p, std::size_t first, std::size_t last, double tolerance) {
+  const double tolerance2 = tolerance * tolerance;
+  for (Vec2 q : flatten({c}, 0.1 * tolerance)) {
+    double best2 = std::numeric_limits<double>::infinity();
+    for (std::size_t i = first; i < last && best2 > tolerance2; ++i)
+      best2 = std::min(best2, lengthSquared(q - closestPointOnSegment(q, p[i], p[i + 1])));
+    if (best2 > tolerance2) return true;
+  }
+  return false;
 }
 
 // One Newton–Raphson step per parameter towards the curve's closest point to its data point.
@@ -133,8 +149,13 @@ void fitPiece(const std::vector<Vec2>& p, std::size_t first, std::size_t last, V
     const Task task = stack.back();
     stack.pop_back();
     if (task.last - task.first == 1) {
-      const double third = distance(p[task.first], p[task.last]) / 3.0;
-      out.push_back({p[task.first], p[task.first] + task.t1 * third, p[task.last] + task.t2 * third, p[task.last]});
+      // Handles along the neighbours' tangents, unless they would bow the curve off the edge
+      // by more than the tolerance (a long edge between turns): then the edge itself.
+      const Vec2 a = p[task.first], b = p[task.last];
+      const double third = distance(a, b) / 3.0;
+      const CubicBezier curve{a, a + task.t1 * third, b + task.t2 * third, b};
+      const bool bows = std::max(distanceToSegment(curve[1], a, b), distanceToSegment(curve[2], a, b)) > tolerance;
+      out.push_back(bows ? straight(a, b) : curve);
       continue;
     }
     std::vector<double> u = chordLengthParameters(p, task.first, task.last);
@@ -156,8 +177,11 @@ void fitPiece(const std::vector<Vec2>& p, std::size_t first, std::size_t last, V
       }
     }
     if (error < tolerance2) {
-      out.push_back(curve);
-      continue;
+      if (!bowsOff(curve, p, task.first, task.last, tolerance)) {
+        out.push_back(curve);
+        continue;
+      }
+      worst = (task.first + task.last) / 2;  // the points fit, the curve between them does not
     }
     const Vec2 centre = centreTangent(p, worst);
     stack.push_back({worst, task.last, -centre, task.t2});  // right half, done second
@@ -259,6 +283,16 @@ Polyline flatten(const std::vector<CubicBezier>& curves, double tolerance) {
     }
   }
   return out;
+}
+
+double fitDeviation(const std::vector<Vec2>& points, bool closed, const std::vector<CubicBezier>& curves, double precision) {
+  double largest = largestDistanceToChain(points, curves, precision);
+  std::vector<Vec2> polygon = points;
+  if (closed && !points.empty()) polygon.push_back(points.front());
+  if (polygon.size() < 2) return largest;
+  std::vector<CubicBezier> edges;  // the polygon as a chain of straight curves
+  for (std::size_t k = 1; k < polygon.size(); ++k) edges.push_back(straight(polygon[k - 1], polygon[k]));
+  return std::max(largest, largestDistanceToChain(flatten(curves, precision), edges, precision));
 }
 
 double largestDistanceToChain(const std::vector<Vec2>& points, const std::vector<CubicBezier>& curves, double precision) {

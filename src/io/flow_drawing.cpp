@@ -1,6 +1,7 @@
 #include "pak/io/flow_drawing.hpp"
 
 #include <cmath>
+#include <string>
 
 #include "pak/io/packing_drawing.hpp"
 
@@ -32,13 +33,14 @@ DrawingGroup fieldLayer(const FlowPacking& packing, double hairline) {
   return group;
 }
 
-// The SVG ids FLOWPAK's output has always given an element's shapes: those of the library
-// element it copies, when libraryIndex finds that element (same file, same shapes).
-void nameShapes(DrawingGroup& group, const FlowElement& e, const std::vector<LoadedElement>& elements) {
+// An element's shapes keep the ids of the library element they copy (when libraryIndex finds
+// it: same file, same shapes), made unique with the element's number: "blade-12".
+void nameShapes(DrawingGroup& group, const FlowElement& e, std::size_t number, const std::vector<LoadedElement>& elements) {
   if (e.libraryIndex < 0 || e.libraryIndex >= static_cast<int>(elements.size())) return;
   const LoadedElement& original = elements[static_cast<std::size_t>(e.libraryIndex)];
   if (original.element.source != e.source || original.shapes.size() != group.shapes.size()) return;
-  for (std::size_t k = 0; k < group.shapes.size(); ++k) group.shapes[k].id = original.shapes[k].id;
+  for (std::size_t k = 0; k < group.shapes.size(); ++k)
+    if (!original.shapes[k].id.empty()) group.shapes[k].id = original.shapes[k].id + "-" + std::to_string(number);
 }
 
 }  // namespace
@@ -66,7 +68,10 @@ Drawing flowDrawing(const SceneLayout& layout, const FlowPacking& packing, const
     if (group.id == "elements") drawnElements = &group;
   std::size_t k = 0;
   for (const auto* list : {&packing.elements, &packing.gapElements})
-    for (const FlowElement& e : *list) nameShapes(drawnElements->children[k++], e, elements);
+    for (const FlowElement& e : *list) {
+      nameShapes(drawnElements->children[k], e, k + 1, elements);
+      ++k;
+    }
   if (!options.debugLayers) return drawing;
 
   const double hairline = 0.8 / packing.canonicalScale;

@@ -108,8 +108,8 @@ std::string pathData(const Shape& shape, int precision, double curveTolerance, S
         put(c[3]);
       }
       if (stats)
-        stats->largestDeviation = std::max(stats->largestDeviation, largestDistanceToChain(subpath.points, curves,
-                                                                                           kDeviationPrecision * curveTolerance));
+        stats->largestDeviation = std::max(stats->largestDeviation, fitDeviation(subpath.points, subpath.closed, curves,
+                                                                                 kDeviationPrecision * curveTolerance));
     } else {
       for (std::size_t i = 0; i < subpath.points.size(); ++i) {
         d += i == 0 ? "M" : (i == 1 ? " L" : " ");

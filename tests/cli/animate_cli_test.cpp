@@ -39,7 +39,8 @@ const std::string kStars =
 
 TEST(CliAnimate, WritesGifAnimatedSvgFramesAndSheetThatAgree) {
   ScratchFolder dir("cli-animate-outputs");
-  PakRun run = runPak(kStars + " --max-iterations 400 --png-frames --svg-frames --png " + shellQuoted(dir.file("first.png")) +
+  // --polyline: the SVG frames as polygons, the points the animated SVG interpolates.
+  PakRun run = runPak(kStars + " --max-iterations 400 --png-frames --svg-frames --polyline --png " + shellQuoted(dir.file("first.png")) +
                       " -o " + shellQuoted(dir.file("out")) +
                       " --report " + shellQuoted(dir.file("r.json")));
   ASSERT_EQ(run.exitCode, 0) << run.err;
@@ -222,7 +223,7 @@ TEST(CliAnimate, TheMirroredManeIsSymmetricAndCheckedOverBothHalves) {
   ScratchFolder dir("cli-animate-mirror");
   PakRun run = runPak("animate -c examples/animate/lion/mane.svg -a examples/animate/lion/mane.json --mirror x=250 "
                       "--slices 6 --frames 8 --width 120 --sheet-frames 3 --svg-keyframes 4 -q --max-iterations 300 "
-                      "--svg-frames -o " + shellQuoted(dir.file("out")) + " --report " + shellQuoted(dir.file("r.json")));
+                      "--svg-frames --polyline -o " + shellQuoted(dir.file("out")) + " --report " + shellQuoted(dir.file("r.json")));
   ASSERT_EQ(run.exitCode, 0) << run.err;
   const auto report = nlohmann::json::parse(readWholeFile(dir.file("r.json")));
   EXPECT_EQ(report["elements"], 16);  // simulated: the left half

@@ -192,7 +192,7 @@ TEST(CliPack, WarnsAboutSkippedShapesInElementFiles) {
   EXPECT_EQ(count(flow.err, "pak: warning: " + element), 1) << flow.err;
 }
 
-// Editable curves by default (issue 17): cubic Béziers fitted within 0.09 canonical units of
+// Editable curves by default (issue 17): cubic Béziers fitted within 0.085 canonical units of
 // the deformed outlines, fewer points than the polygons, which --polyline writes as before.
 TEST(CliPack, OutlinesAreCurvesByDefaultAndPolygonsOnRequest) {
   ScratchFolder dir("cli-pack-curves");

@@ -140,3 +140,39 @@ TEST(BezierFit, LargestDistanceToChainHasKnownAnswers) {
 
 }  // namespace
 }  // namespace pak
+
+namespace pak {
+namespace {
+
+// Known answers, both ways: a chain that bows 1 unit off a straight polygon between its
+// points is 0 from every point but 0.75 from the polygon at its middle (a cubic with both
+// inner control points 1 unit off reaches 0.75 at t = 1/2).
+TEST(BezierFit, FitDeviationMeasuresTheChainAgainstThePolygonToo) {
+  const std::vector<Vec2> points{{0, 0}, {3, 0}};
+  const std::vector<CubicBezier> bowed{{Vec2{0, 0}, Vec2{1, 1}, Vec2{2, 1}, Vec2{3, 0}}};
+  EXPECT_DOUBLE_EQ(largestDistanceToChain(points, bowed, 1e-4), 0.0);
+  EXPECT_NEAR(fitDeviation(points, false, bowed, 1e-4), 0.75, 1e-3);
+  // A ring counts its closing edge: the square's four sides are 0 from the closed ring, but
+  // the fourth side's middle is 1 from the three sides of the open polyline.
+  const std::vector<Vec2> square{{0, 0}, {2, 0}, {2, 2}, {0, 2}};
+  const std::vector<CubicBezier> sides{{Vec2{0, 0}, Vec2{0.5, 0}, Vec2{1.5, 0}, Vec2{2, 0}},
+                                       {Vec2{2, 0}, Vec2{2, 0.5}, Vec2{2, 1.5}, Vec2{2, 2}},
+                                       {Vec2{2, 2}, Vec2{1.5, 2}, Vec2{0.5, 2}, Vec2{0, 2}},
+                                       {Vec2{0, 2}, Vec2{0, 1.5}, Vec2{0, 0.5}, Vec2{0, 0}}};
+  EXPECT_NEAR(fitDeviation(square, true, sides, 1e-4), 0.0, 1e-12);
+  EXPECT_NEAR(fitDeviation(square, false, sides, 1e-4), 1.0, 1e-3);
+}
+
+// A long edge between two sharp-ish turns that are not corners: tangent handles would bow the
+// curve far off the edge (a packed element's straight side, once fitted, went 66 units² over
+// the container's wall); the fit keeps within its tolerance of the polygon both ways.
+TEST(BezierFit, ALongEdgeBetweenTurnsDoesNotBowOffThePolygon) {
+  const Ring ring{{0, 0}, {100, 0}, {102, 2}, {102, 40}, {100, 42}, {0, 42}, {-2, 40}, {-2, 2}};
+  for (double tolerance : {0.05, 0.1, 0.4}) {
+    const std::vector<CubicBezier> curves = fitCubicBeziersClosed(ring, tolerance, 1.0);
+    EXPECT_LE(fitDeviation(ring, true, curves, 0.01 * tolerance), tolerance * 1.02) << tolerance;
+  }
+}
+
+}  // namespace
+}  // namespace pak
