@@ -62,7 +62,7 @@ int runFlow(FlowArguments& args, const CLI::App& command) {
   Drawing drawing = flowDrawing(input.layout, packing, elements, drawingOptions);
   const SvgWriteOptions svgOptions = outlineWriteOptions(args.polyline, kFlowCurveTolerance, packing.canonicalScale);
   SvgPathStats paths;
-  writeSvgFile(drawing, common.output, svgOptions, &paths);
+  writeSvgFile(drawing, common.output, svgOptions, common.report.empty() ? nullptr : &paths);  // measuring the fit is for the report
   writePngPreview(drawing, common.png, common.pngWidth);
 
   const PackingCheck check = auditFlowPacking(packing, library);

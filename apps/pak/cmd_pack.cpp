@@ -121,7 +121,7 @@ int runPack(PackArguments& args, const CLI::App& command) {
   Drawing drawing = packingDrawing(input.layout, packing, drawingOptions);
   SvgPathStats paths;
   writeSvgFile(drawing, common.output, outlineWriteOptions(args.polyline, kMeshCurveTolerance, packing.canonicalScale),
-               &paths);
+               common.report.empty() ? nullptr : &paths);  // measuring the fit is for the report
   writePngPreview(drawing, common.png, common.pngWidth);
   if (!args.tilePreview.empty()) {
     const int n = args.tilePreviewRepeat;

@@ -7,6 +7,7 @@
 
 #include "pak/error.hpp"
 #include "pak/geom/closest_point.hpp"
+#include "pak/geom/resample.hpp"
 
 // Schneider's curve fitting [Sch90]: chord-length parameters, a least-squares solve for the
 // two inner control points along fixed end tangents, a few Newton–Raphson corrections of the
@@ -292,16 +293,32 @@ double fitDeviation(const std::vector<Vec2>& points, bool closed, const std::vec
   if (polygon.size() < 2) return largest;
   std::vector<CubicBezier> edges;  // the polygon as a chain of straight curves
   for (std::size_t k = 1; k < polygon.size(); ++k) edges.push_back(straight(polygon[k - 1], polygon[k]));
-  return std::max(largest, largestDistanceToChain(flatten(curves, precision), edges, precision));
+  // The chain sampled every 5 precisions (a straight piece flattens to its ends alone), so
+  // this half is measured within 2.5 precisions.
+  return std::max(largest, largestDistanceToChain(resamplePolyline(flatten(curves, precision), 5.0 * precision), edges,
+                                                  precision));
 }
 
 double largestDistanceToChain(const std::vector<Vec2>& points, const std::vector<CubicBezier>& curves, double precision) {
   const Polyline chain = flatten(curves, precision);
+  const std::size_t n = chain.size();
   double largest2 = 0.0;
+  // Consecutive points are usually near the same part of the chain: the segments around the
+  // last one's nearest give a bound first, and the full scan stops as soon as the point is
+  // no further than the largest distance so far.
+  constexpr std::size_t kWindow = 8;
+  std::size_t near = 1;
   for (Vec2 p : points) {
+    auto squared = [&](std::size_t k) { return lengthSquared(p - closestPointOnSegment(p, chain[k - 1], chain[k])); };
     double best2 = lengthSquared(p - chain.front());
-    for (std::size_t k = 1; k < chain.size() && best2 > largest2; ++k)  // no nearer than the largest: skip
-      best2 = std::min(best2, lengthSquared(p - closestPointOnSegment(p, chain[k - 1], chain[k])));
+    std::size_t nearest = near;
+    auto consider = [&](std::size_t k) {
+      const double d2 = squared(k);
+      if (d2 < best2) best2 = d2, nearest = k;
+    };
+    for (std::size_t k = near > kWindow ? near - kWindow : 1; k < n && k <= near + kWindow; ++k) consider(k);
+    for (std::size_t k = 1; k < n && best2 > largest2; ++k) consider(k);
+    near = nearest;
     largest2 = std::max(largest2, best2);
   }
   return std::sqrt(largest2);
