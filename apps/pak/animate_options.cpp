@@ -30,7 +30,7 @@ OptionTable<AnimationOptions> animationOptionTable() {
       {"frame-separation", field(&O::frameSeparation, &FrameSeparationOptions::rounds), "frames between slices in which elements overlap by a sliver or leave the container: each offending element shrinks 1 % about its centre per round, for at most this many rounds, until the frame is clean, eased over neighbouring frames (0: frames as interpolated, as in the thesis)"},
       {"frame-separation-samples", field(&O::frameSeparation, &FrameSeparationOptions::samples), "frames checked for --frame-separation, evenly over t (0: twice the slices); a frame between them that still overlaps is separated on its own"},
       {"frame-separation-ramp", field(&O::frameSeparation, &FrameSeparationOptions::ramp), "with --frame-separation: an element's shrinking eases in and out over this share of the animation on either side, so it does not pulse"},
-      {"time-limit", field(&O::stop, &AnimationStopRule::timeLimit), "stop after this many seconds and write the animation as it is then (0: no limit; a run stopped by it depends on the machine's speed)"},
+      {"time-limit", field(&O::stop, &AnimationStopRule::timeLimit), "stop the simulation after this many seconds and render the animation as it is then, frames cleaned as always, with stop-reason time-limit in the report (0: no limit; a run stopped by it depends on the machine's speed). Ctrl-C does the same (interrupted); a second Ctrl-C aborts, leaving no half-written file"},
   };
   return own + mounted(simulationOptions(), field(&O::simulation)) + mounted(runOptions(), field(&O::run));
 }

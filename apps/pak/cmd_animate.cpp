@@ -10,6 +10,7 @@
 #include "art_check.hpp"
 #include "command.hpp"
 #include "input_warnings.hpp"
+#include "interrupt.hpp"
 #include "mirror_option.hpp"
 #include "outline_output.hpp"
 #include "output_files.hpp"
@@ -109,6 +110,7 @@ int runAnimate(AnimateArguments& args, const CLI::App& command) {
   const int frameCount = args.frames > 0 ? args.frames : script.frames;
   // The frame separation checks at least every frame written (FrameSeparationOptions::samples).
   AnimationOptions options = args.options;
+  options.run.stopRequest = &interruptRequest();
   if (options.frameSeparation.samples == 0)
     options.frameSeparation.samples = std::max(frameCount, 2 * (options.slices > 0 ? options.slices : script.slices));
   const AnimatedPacking animation =

@@ -8,6 +8,7 @@
 #include "flow_arguments.hpp"
 #include "flow_report.hpp"
 #include "input_warnings.hpp"
+#include "interrupt.hpp"
 #include "mirror_option.hpp"
 #include "outline_output.hpp"
 #include "output_files.hpp"
@@ -56,6 +57,7 @@ int runFlow(FlowArguments& args, const CLI::App& command) {
     };
   }
 
+  args.options.run.stopRequest = &interruptRequest();
   FlowPacking packing = packFlow(scene, library, args.options, callbacks);
   FlowDrawingOptions drawingOptions;
   drawingOptions.debugLayers = common.debugLayers;
@@ -70,9 +72,12 @@ int runFlow(FlowArguments& args, const CLI::App& command) {
   if (!common.quiet)
     std::fprintf(stderr,
                  "pak flow: %zu elements (%zu gap shapes), %zu streamlines, %d refinement iterations, element area "
-                 "%.3f of the free space, %d overlapping pairs, %d outside, %d folded, %.1f s\n",
+                 "%.3f of the free space, %d overlapping pairs, %d outside, %d folded, %.1f s%s\n",
                  packing.elements.size(), packing.gapElements.size(), packing.streamlines.size(), packing.iterations,
-                 flowFill(packing), check.overlappingPairs, check.elementsOutside, check.selfIntersecting, wall);
+                 flowFill(packing), check.overlappingPairs, check.elementsOutside, check.selfIntersecting, wall,
+                 packing.stopReason == StopReason::IterationCap ? "" : packing.stopReason == StopReason::TimeLimit
+                                                                         ? " (stopped by --time-limit)"
+                                                                         : " (stopped by Ctrl-C)");
   if (!common.report.empty()) writeFileAtomically(common.report, flowReport(args, packing, check, paths, wall).dump(2) + "\n");
   return 0;
 }

@@ -9,6 +9,7 @@
 
 #include "command.hpp"
 #include "input_warnings.hpp"
+#include "interrupt.hpp"
 #include "outline_output.hpp"
 #include "output_files.hpp"
 #include "pack_arguments.hpp"
@@ -111,6 +112,7 @@ int runPack(PackArguments& args, const CLI::App& command) {
   }
 
   auto simulationStart = Clock::now();
+  args.options.run.stopRequest = &interruptRequest();
   Packing packing = packRepulsion(scene, library, secondaryLibrary, args.options, callbacks);
   PackTimes times;
   times.simulation = std::chrono::duration<double>(Clock::now() - simulationStart).count();

@@ -21,6 +21,7 @@ OptionTable<FlowOptions> flowOptionTable() {
       {"lr-samples", field(&O::lrSamples), "n_f, samples of the LR functions"},
       {"spacing", field(&O::spacing), "space kept between elements, and between elements and walls (canonical units); negative: in proportion to the gap"},
       {"iterations", field(&O::iterations), "refinement iterations (Algorithm 2)"},
+      {"time-limit", field(&O::timeLimit), "stop refining after this many seconds and write the packing as it is then, with stop-reason time-limit in the report (0: no limit; a run stopped by it depends on the machine's speed). Ctrl-C does the same (interrupted); a second Ctrl-C aborts, leaving no half-written file"},
       {"growth-tolerance", field(&O::growthTolerance), "α: a refined placement is kept when its area is at least α × the old one"},
       {"growth-limit", field(&O::growthLimit), "g_limit: how far a streamline end or a blob moves per iteration (canonical units)"},
       {"max-rotation", field(&O::maxRotationDegrees), "refinement tries rotations of ±1…N degrees"},

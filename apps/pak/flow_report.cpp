@@ -35,6 +35,7 @@ nlohmann::json flowReport(const FlowArguments& args, const FlowPacking& packing,
   report["gap-element-count"] = packing.gapElements.size();
   report["streamline-count"] = packing.streamlines.size();
   report["iterations"] = packing.iterations;
+  report["stop-reason"] = toString(packing.stopReason);
   report["placements-tried"] = packing.placementsTried;
   report["placements-accepted"] = packing.placementsAccepted;
   report["fill-ratio-art"] = flowFill(packing);

@@ -18,6 +18,7 @@ const char* toString(AnimationStop reason) {
     case AnimationStop::Stalled: return "stalled";
     case AnimationStop::IterationCap: return "iteration-cap";
     case AnimationStop::TimeLimit: return "time-limit";
+    case AnimationStop::Interrupted: return "interrupted";
   }
   return "?";
 }

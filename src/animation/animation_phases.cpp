@@ -425,7 +425,7 @@ AnimationStop simulateAnimation(SpacetimeSimulation& sim, const AnimationRun& ru
                           sim.neighbourOrigin(),
                           meanGrowth.values(), meanGrowth.recorded()};
   };
-  const Deadline deadline(run.started, options.stop.timeLimit);
+  const Deadline deadline(run.started, options.stop.timeLimit, options.run.stopRequest);
   const std::optional<AnimationStop> stop = runUntilStopped<AnimationStop>(
       sim, options.stop.maxIterations, meanGrowth,
       [&] {
@@ -443,7 +443,7 @@ AnimationStop simulateAnimation(SpacetimeSimulation& sim, const AnimationRun& ru
         if (sim.largestSliceGap() < options.stop.closeness) return AnimationStop::AllTouching;
         if (sim.minGrowth() >= options.spacetime.maxGrowth) return AnimationStop::GrowthCap;
         if (window.full() && window.rise() < options.stop.stallGrowth) return AnimationStop::Stalled;
-        if (deadline.passed()) return AnimationStop::TimeLimit;
+        if (deadline.passed()) return deadline.requested() ? AnimationStop::Interrupted : AnimationStop::TimeLimit;
         return std::nullopt;
       });
   if (callbacks.onProgress) callbacks.onProgress(progress());

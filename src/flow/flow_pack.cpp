@@ -19,6 +19,7 @@
 #include "pak/geom/simplify.hpp"
 #include "pak/geom/verify.hpp"
 #include "pak/sim/packing.hpp"
+#include "sim/deadline.hpp"
 #include "sim/packing_setup.hpp"
 #include "sim/parallel.hpp"
 
@@ -50,6 +51,7 @@ void validate(const FlowOptions& o) {
   if (o.lrSamples < 4 || o.lrSamples > 10000) throw InputError("--lr-samples", "must be 4 to 10000");
   if (!std::isfinite(o.spacing)) throw InputError("--spacing", "must be a number (≥ 0; negative: automatic)");
   if (o.iterations < 0 || o.iterations > 10000) throw InputError("--iterations", "must be 0 to 10000");
+  if (!(std::isfinite(o.timeLimit) && o.timeLimit >= 0.0)) throw InputError("--time-limit", "must be a number of seconds ≥ 0 (0: none)");
   if (!(o.growthTolerance > 0.0 && o.growthTolerance <= 1.0)) throw InputError("--growth-tolerance", "must be in (0, 1]");
   if (!positive(o.growthLimit)) throw InputError("--growth-limit", "must be a positive number");
   if (o.maxRotationDegrees < 0 || o.maxRotationDegrees > 45) throw InputError("--max-rotation", "must be 0 to 45 degrees");
@@ -149,9 +151,11 @@ class FlowPacker {
   Region freeShrunk_;  // free space inset by spacing / 2: where element art may go
   std::vector<Region> skins_;  // each element's outline grown by `spacing`
   FlowPacking packing_;
+  Deadline deadline_{Clock::now(), 0.0};  // set when the run starts
 };
 
 FlowPacking FlowPacker::run() {
+  deadline_ = Deadline(Clock::now(), options_.timeLimit, options_.run.stopRequest);
   setUp();
   auto t = Clock::now();
   for (int k = 0; k < static_cast<int>(packing_.containers.size()); ++k) packContainer(k);
@@ -475,9 +479,11 @@ void FlowPacker::refine() {
     return order;
   };
   std::vector<Step> steps;
+  // Whether the phase ran to its end (the deadline stops it between waves).
   auto phase = [&](bool shifting) {
     steps.assign(packing_.elements.size(), Step{});
     for (const std::vector<std::size_t>& wave : waves(smallestFirst())) {
+      if (deadline_.passed()) return false;
       pool.parallelFor(wave.size(), 1, [&](std::size_t begin, std::size_t end) {
         for (std::size_t k = begin; k < end; ++k)
           steps[wave[k]] = shifting ? proposeShift(wave[k]) : proposeGrowth(wave[k]);
@@ -494,10 +500,14 @@ void FlowPacker::refine() {
         }
       }
     }
+    return true;
   };
   for (int iteration = 1; iteration <= options_.iterations; ++iteration) {
-    phase(true);   // shifting streamlines (fixed spines stay where the artist drew them)
-    phase(false);  // growing blobs
+    // Shifting streamlines (fixed spines stay where the artist drew them), then growing blobs.
+    if (!phase(true) || !phase(false)) {
+      packing_.stopReason = deadline_.requested() ? StopReason::Interrupted : StopReason::TimeLimit;
+      break;  // the waves done are kept: each accepted step left the packing clean
+    }
     packing_.iterations = iteration;
     packing_.areaPerIteration.push_back(totalArea());
     report("refinement", iteration);

@@ -197,7 +197,7 @@ std::string flipBookSvg(const std::vector<Drawing>& frames, const AnimationOutpu
 
 void writeAnimatedSvg(const std::vector<Drawing>& frames, const std::string& path, const AnimationOutputOptions& options) {
   animation_frames::checkFrames(frames, options, path);
-  (void)temporaryPathFor(path);  // a missing folder fails before the work
+  checkOutputPath(path);  // a missing folder fails before the work
   std::string text;
   try {
     text = sameStructure(frames) ? morphingSvg(frames, options) : flipBookSvg(frames, options);

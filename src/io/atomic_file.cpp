@@ -58,6 +58,37 @@ std::string uniqueTemporaryName(const std::string& path) {
 
 void removeQuietly(const std::string& path) { ::unlink(path.c_str()); }
 
+// The temporaries being written, in fixed slots that a signal handler can read: a slot is
+// free, being filled, or holds a path. A temporary that finds no free slot (more than
+// kSlots at once) is not listed.
+struct TemporarySlot {
+  enum : int { kFree, kFilling, kListed };
+  std::atomic<int> state{kFree};
+  char path[4096] = {};
+};
+constexpr int kSlots = 64;
+TemporarySlot slots[kSlots];
+static_assert(std::atomic<int>::is_always_lock_free);
+
+void listTemporary(const std::string& path) {
+  if (path.size() >= sizeof(TemporarySlot::path)) return;
+  for (TemporarySlot& slot : slots) {
+    int expected = TemporarySlot::kFree;
+    if (!slot.state.compare_exchange_strong(expected, TemporarySlot::kFilling)) continue;
+    std::memcpy(slot.path, path.c_str(), path.size() + 1);
+    slot.state.store(TemporarySlot::kListed, std::memory_order_release);
+    return;
+  }
+}
+
+void unlistTemporary(const std::string& path) {
+  for (TemporarySlot& slot : slots)
+    if (slot.state.load(std::memory_order_acquire) == TemporarySlot::kListed && path == slot.path) {
+      slot.state.store(TemporarySlot::kFree, std::memory_order_release);
+      return;
+    }
+}
+
 // write() until everything is out, retrying on EINTR and short writes.
 bool writeAll(int descriptor, const std::string& contents) {
   const char* data = contents.data();
@@ -76,13 +107,19 @@ bool writeAll(int descriptor, const std::string& contents) {
 
 }  // namespace
 
+void checkOutputPath(const std::string& path) { checkWritableTarget(path); }
+
 std::string temporaryPathFor(const std::string& path) {
   checkWritableTarget(path);
-  return uniqueTemporaryName(path);
+  std::string temporary = uniqueTemporaryName(path);
+  listTemporary(temporary);
+  return temporary;
 }
 
 void commitTemporary(const std::string& temporary, const std::string& path) {
-  if (::rename(temporary.c_str(), path.c_str()) != 0) {
+  const int renamed = ::rename(temporary.c_str(), path.c_str());
+  unlistTemporary(temporary);
+  if (renamed != 0) {
     int error = errno;
     removeQuietly(temporary);
     throw InputError(path, "cannot write: " + describeErrno(error));
@@ -103,9 +140,15 @@ void writeFileAtomically(const std::string& path, const std::string& contents) {
   }
   if (!ok) {
     removeQuietly(temporary);
+    unlistTemporary(temporary);
     throw InputError(path, "cannot write: " + describeErrno(error));
   }
   commitTemporary(temporary, path);
+}
+
+void removeTemporaries() noexcept {
+  for (TemporarySlot& slot : slots)
+    if (slot.state.load(std::memory_order_acquire) == TemporarySlot::kListed) ::unlink(slot.path);
 }
 
 }  // namespace pak

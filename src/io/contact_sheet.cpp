@@ -24,7 +24,7 @@ void writeContactSheet(const std::vector<Drawing>& frames, const std::vector<std
   if (!captions.empty() && captions.size() != frames.size())
     throw InputError(path, std::to_string(captions.size()) + " captions for " + std::to_string(frames.size()) +
                                " frames (give one per frame, or none)");
-  (void)temporaryPathFor(path);  // a missing folder fails before the rendering
+  checkOutputPath(path);  // a missing folder fails before the rendering
 
   // Every cell is one frame at options.width, with a caption strip under it when captioned.
   const PngOptions png = animation_frames::rasterOptions(frames, options, path);

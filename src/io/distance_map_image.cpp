@@ -35,7 +35,7 @@ std::uint32_t pixel(double r, double g, double b) {
 }  // namespace
 
 void writeDistanceMapImage(const PackingGeometry& packing, const std::string& path, int width) {
-  (void)temporaryPathFor(path);  // a missing folder fails before the transform is computed
+  checkOutputPath(path);  // a missing folder fails before the transform is computed
   if (width < 16 || width > 8192) throw InputError(path, "distance map width must be 16 to 8192 pixels");
   const DistanceMap map = distanceMap(packing, width);
 

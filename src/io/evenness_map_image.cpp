@@ -67,7 +67,7 @@ Rgb cellColour(const EvennessMap& map, const std::vector<std::uint8_t>& axis, st
 
 Evenness writeEvennessMapImage(const PackingGeometry& packing, const std::string& path,
                                const EvennessOptions& options) {
-  (void)temporaryPathFor(path);  // a missing folder fails before the measurement
+  checkOutputPath(path);  // a missing folder fails before the measurement
   if (options.resolution < 16 || options.resolution > 8192)
     throw InputError(path, "evenness map width must be 16 to 8192 pixels");
   const EvennessMap map = evennessMap(packing, options);

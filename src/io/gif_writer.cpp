@@ -44,7 +44,7 @@ RgbaImage renderFrame(const Drawing& frame, const PngOptions& png, const std::st
 
 void writeGif(const std::vector<Drawing>& frames, const std::string& path, const AnimationOutputOptions& options) {
   animation_frames::checkFrames(frames, options, path);
-  (void)temporaryPathFor(path);  // a missing folder fails before the rendering
+  checkOutputPath(path);  // a missing folder fails before the rendering
   const PngOptions png = animation_frames::rasterOptions(frames, options, path);
   const bool transparent = !options.background.has_value();
 

@@ -172,7 +172,7 @@ void writeMetricsPlot(const std::vector<PackingMetrics>& packings, const std::st
   for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   if (extension != ".png" && extension != ".svg")
     throw InputError(path, "unknown plot format '" + extension + "' (use .png or .svg)");
-  (void)temporaryPathFor(path);  // a missing folder fails before drawing
+  checkOutputPath(path);  // a missing folder fails before drawing
   const int width = 3 * options.panelWidth;
   const int height = options.panelHeight + static_cast<int>(kLegendLine * (packings.size() + 0.5));
   std::string bytes;

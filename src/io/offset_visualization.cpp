@@ -40,7 +40,7 @@ void fillRegion(cairo_t* cr, const Region& region, double r, double g, double b,
 }  // namespace
 
 void writeOffsetVisualization(const PackingGeometry& packing, double r, const std::string& path, int width) {
-  (void)temporaryPathFor(path);  // a missing folder fails before the offsets are computed
+  checkOutputPath(path);  // a missing folder fails before the offsets are computed
   if (width < 16 || width > 16384) throw InputError(path, "visualization width must be 16 to 16384 pixels");
   if (!std::isfinite(r) || r < 0.0) throw InputError(path, "the visualization offset must be non-negative");
   Box box = bounds(packing.container);

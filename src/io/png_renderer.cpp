@@ -194,7 +194,7 @@ RgbaImage toRgba(cairo_surface_t* surface) {
 
 void writePngFile(const Drawing& drawing, const std::string& path, const PngOptions& options) {
   // Check the destination first: a missing folder should fail before seconds of rendering.
-  (void)temporaryPathFor(path);  // throws InputError when the folder is missing or read-only
+  checkOutputPath(path);  // throws InputError when the folder is missing or read-only
   SurfacePtr surface = raster::renderSurface(drawing, options, path);
   // Encode in memory, then reuse the atomic writer: one code path for every output file.
   std::string png;

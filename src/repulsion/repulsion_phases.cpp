@@ -213,7 +213,7 @@ StopReason simulate(PackingSimulation& sim, const RepulsionRun& run, const Repul
   // Eq. 4.7 over a window of the last w + 1 area fractions. The fraction is the meshes' rest
   // area (see restFill): the measured skin area jitters by more than ε from step to step.
   StallWindow window(stop.stallWindow);
-  const Deadline deadline(run.started, stop.timeLimit);
+  const Deadline deadline(run.started, stop.timeLimit, run.options.run.stopRequest);
   auto report = [&] {
     if (!callbacks.onProgress) return;
     RepulsionProgress progress{iterationOffset + sim.iteration(), sim.fill(), sim.growingCount(),
@@ -235,7 +235,7 @@ StopReason simulate(PackingSimulation& sim, const RepulsionRun& run, const Repul
       [&](const StallWindow& w) -> std::optional<StopReason> {
         if (sim.fill() >= targetFill) return StopReason::TargetFill;
         if (w.full() && w.rms() < stop.stallEpsilon) return StopReason::Stalled;
-        if (deadline.passed()) return StopReason::TimeLimit;
+        if (deadline.passed()) return deadline.requested() ? StopReason::Interrupted : StopReason::TimeLimit;
         return std::nullopt;
       });
   report();
@@ -264,7 +264,7 @@ constexpr double kSettleDepthShare = 0.25;
 
 int press(PackingSimulation& sim, const RepulsionRun& run, const RepulsionStopRule& stop, int iterations) {
   const int start = sim.iteration();
-  const Deadline deadline(run.started, stop.timeLimit);
+  const Deadline deadline(run.started, stop.timeLimit, run.options.run.stopRequest);
   sim.press(kSettleDepthShare * run.options.gap);
   while (sim.iteration() - start < iterations && !deadline.passed()) sim.step();
   sim.grow();
@@ -284,10 +284,11 @@ int settle(PackingSimulation& sim, const RepulsionRun& run, const RepulsionStopR
   // A tile has no clean-up of its art (cleanArt), so its elements shrink until clear.
   const bool tiled = isTiled(run.period);
   sim.settle(kSettleDepthShare * run.options.gap, tiled ? 0.0 : kSettleFloor);
-  const Deadline deadline(run.started, stop.timeLimit);
+  // Not cut short by the time limit or a stop request: a run they stop is cleaned up too (a
+  // clean packing costs only the checks), within the clean-up's own iterations.
   auto left = [&] { return stop.settleIterations - (sim.iteration() - start); };
   auto shrink = [&] {
-    while (left() > 0 && sim.unsettledCount() > 0 && !deadline.passed()) sim.step();
+    while (left() > 0 && sim.unsettledCount() > 0) sim.step();
   };
   shrink();
   if (!tiled) {
@@ -295,24 +296,24 @@ int settle(PackingSimulation& sim, const RepulsionRun& run, const RepulsionStopR
     shrink();
   }
   if (sim.parameters().unfoldStrength > 0.0)
-    for (int round = 0; round < kArtRounds && left() > 0 && !deadline.passed(); ++round) {
+    for (int round = 0; round < kArtRounds && left() > 0; ++round) {
       const std::vector<Fold> folds = foldedMeshes(sim, types);
       if (folds.empty()) break;
       // Gently first: a fold still there a round later is held twice as hard.
       const double strength = std::ldexp(sim.parameters().unfoldStrength, round);
       for (const Fold& fold : folds)
         sim.restoreAround(fold.mesh, fold.at, kUnfoldRadius * sim.parameters().cellSize, strength);
-      for (int i = 0; i < kArtRoundIterations && left() > 0 && !deadline.passed(); ++i) sim.step();
+      for (int i = 0; i < kArtRoundIterations && left() > 0; ++i) sim.step();
       shrink();
     }
   // A fold the rounds left: the element is relaxed toward its rest shape until it no longer
   // folds, then held in that shape as a whole while the forces move it clear and it shrinks
   // if still deep. The others stand still meanwhile, so that only it gives way.
-  if (sim.parameters().unfoldStrength > 0.0 && left() > 0 && !deadline.passed()) {
+  if (sim.parameters().unfoldStrength > 0.0 && left() > 0) {
     const std::vector<char> relaxed = relaxFolds(sim, types);
     if (std::any_of(relaxed.begin(), relaxed.end(), [](char r) { return r != 0; })) {
       sim.holdRestShapes(relaxed, std::ldexp(sim.parameters().unfoldStrength, kArtRounds));
-      for (int i = 0; i < kArtRoundIterations && left() > 0 && !deadline.passed(); ++i) sim.step();
+      for (int i = 0; i < kArtRoundIterations && left() > 0; ++i) sim.step();
       shrink();
     }
   }

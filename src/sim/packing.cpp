@@ -11,6 +11,7 @@ const char* toString(StopReason reason) {
     case StopReason::Stalled: return "stalled";
     case StopReason::IterationCap: return "iteration-cap";
     case StopReason::TimeLimit: return "time-limit";
+    case StopReason::Interrupted: return "interrupted";
   }
   return "?";
 }

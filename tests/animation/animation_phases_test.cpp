@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
+
 #include "animation/animation_fixtures.hpp"
 #include "sim/fold_relaxation.hpp"
 
@@ -103,6 +105,17 @@ TEST(AnimationPhases, TheTimeLimitStopsTheRun) {
   const AnimatedPacking a =
       packAnimation(test::discScene(), {test::starElement("star.svg")}, test::spinningStars(4), options);
   EXPECT_EQ(a.stopReason, AnimationStop::TimeLimit);
+  EXPECT_EQ(a.iterations, 1);
+}
+
+TEST(AnimationPhases, AStopRequestStopsTheRunAsTheTimeLimitDoes) {
+  AnimationOptions options = test::quickAnimationOptions();
+  const std::atomic<bool> stop{true};
+  options.run.stopRequest = &stop;
+  const AnimatedPacking a =
+      packAnimation(test::discScene(), {test::starElement("star.svg")}, test::spinningStars(4), options);
+  EXPECT_EQ(a.stopReason, AnimationStop::Interrupted);
+  EXPECT_STREQ(toString(a.stopReason), "interrupted");
   EXPECT_EQ(a.iterations, 1);
 }
 

@@ -3,6 +3,7 @@
 // seed reproduces the packing.
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
 
 #include "pak/error.hpp"
@@ -103,6 +104,27 @@ TEST(FlowPack, RectangleIsFilledWithoutOverlapsAndRefinementKeepsTheArea) {
   EXPECT_GE(p.areaPerIteration.back(), p.areaPerIteration.front());
   EXPECT_GT(flowFill(p), 0.2);
   EXPECT_LT(flowFill(p), 1.0);
+}
+
+TEST(FlowPack, TheTimeLimitAndAStopRequestEndRefinementWithACleanPacking) {
+  Library library{lens(), halfLens()};
+  FlowOptions o = quickOptions();
+  o.iterations = 1000;
+  o.timeLimit = 1e-9;  // spent before the first wave
+  FlowPacking limited = packFlow(rectangleScene(), library, o);
+  EXPECT_EQ(limited.stopReason, StopReason::TimeLimit);
+  EXPECT_EQ(limited.iterations, 0);
+  ASSERT_GE(limited.elements.size(), 4u);  // the placement is kept
+  expectValidPacking(limited);
+
+  const std::atomic<bool> stop{true};
+  o.timeLimit = 0.0;
+  o.run.stopRequest = &stop;
+  FlowPacking interrupted = packFlow(rectangleScene(), library, o);
+  EXPECT_EQ(interrupted.stopReason, StopReason::Interrupted);
+  EXPECT_EQ(interrupted.iterations, 0);
+  expectValidPacking(interrupted);
+  EXPECT_EQ(packFlow(rectangleScene(), library, quickOptions()).stopReason, StopReason::IterationCap);
 }
 
 TEST(FlowPack, WithToleranceOneTheAreaNeverFalls) {

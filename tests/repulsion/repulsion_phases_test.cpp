@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
 
 #include "pak/geom/clipping.hpp"
@@ -120,6 +121,16 @@ TEST_F(RepulsionPhases, TheTimeLimitStopsTheRun) {
   options.stop.timeLimit = 1e-9;
   const Packing packing = packRepulsion(scene, library, options);
   EXPECT_EQ(packing.stopReason, StopReason::TimeLimit);
+  EXPECT_EQ(packing.iterations, 1);
+}
+
+TEST_F(RepulsionPhases, AStopRequestStopsTheRunAsTheTimeLimitDoes) {
+  RepulsionOptions options = quickOptions();
+  const std::atomic<bool> stop{true};
+  options.run.stopRequest = &stop;
+  const Packing packing = packRepulsion(scene, library, options);
+  EXPECT_EQ(packing.stopReason, StopReason::Interrupted);
+  EXPECT_STREQ(toString(packing.stopReason), "interrupted");
   EXPECT_EQ(packing.iterations, 1);
 }
 

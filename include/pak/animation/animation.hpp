@@ -53,7 +53,7 @@ struct AnimationCallbacks {
   int checkpointEvery = 0;       // 0: never
 };
 
-enum class AnimationStop { AllTouching, GrowthCap, Stalled, IterationCap, TimeLimit };
+enum class AnimationStop { AllTouching, GrowthCap, Stalled, IterationCap, TimeLimit, Interrupted };
 const char* toString(AnimationStop reason);
 
 struct AnimatedElement {

@@ -19,6 +19,7 @@
 #include "pak/geom/art.hpp"
 #include "pak/geom/mirror_line.hpp"
 #include "pak/geom/scene.hpp"
+#include "pak/sim/packing.hpp"
 #include "pak/sim/run_options.hpp"
 
 namespace pak {
@@ -42,6 +43,10 @@ struct FlowOptions {
   int lrSamples = 100;        // n_f
   // --- refinement (3.3.6, Algorithm 2)
   int iterations = 15;
+  // Seconds of wall time from the start after which refinement stops, between two of its
+  // waves, with the packing as it is then (every accepted step leaves it clean); 0: none.
+  // RunOptions::stopRequest stops it the same way.
+  double timeLimit = 0.0;
   double growthTolerance = 0.9;  // α: a new placement is kept if its area ≥ α × the old one
   double growthLimit = 5.0;      // g_limit (0.005 l_canvas)
   int maxRotationDegrees = 10;   // rotations ±1°…±max° tried during refinement
@@ -109,7 +114,9 @@ struct FlowPacking {
   std::vector<Polyline> streamlines;  // as first traced (before extension), all containers
   double canonicalScale = 1.0;  // canonical units per input unit
   FlowDensity density;
-  int iterations = 0;
+  int iterations = 0;         // refinement iterations completed
+  // IterationCap: all of them; TimeLimit or Interrupted: refinement stopped early.
+  StopReason stopReason = StopReason::IterationCap;
   // Placements tried and accepted during refinement (shift and growth phases together).
   int placementsTried = 0, placementsAccepted = 0;
   std::vector<double> areaPerIteration;  // total element area after placement and each iteration

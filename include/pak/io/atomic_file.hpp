@@ -7,8 +7,14 @@ namespace pak {
 
 // Throws InputError if the file cannot be written.
 void writeFileAtomically(const std::string& path, const std::string& contents);
+// Throws InputError if `path` cannot be written (a missing or read-only folder): for writers
+// to fail before their work.
+void checkOutputPath(const std::string& path);
 // A temporary path beside `path` for writers that need a file name (cairo), and the commit.
 std::string temporaryPathFor(const std::string& path);
 void commitTemporary(const std::string& temporary, const std::string& path);
+// Removes every temporary still being written. Async-signal-safe: for a handler that ends the
+// process (a second Ctrl-C), so that no half-written file is left.
+void removeTemporaries() noexcept;
 
 }  // namespace pak

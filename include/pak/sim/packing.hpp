@@ -29,8 +29,9 @@ struct PlacedElement {
   bool leavesContainer = false;
 };
 
-// TimeLimit: the run ran out of --time-limit (the one stop that depends on the machine).
-enum class StopReason { TargetFill, Stalled, IterationCap, TimeLimit };
+// TimeLimit: the run ran out of --time-limit; Interrupted: RunOptions::stopRequest was set
+// (Ctrl-C). The two stops that depend on the machine or the user.
+enum class StopReason { TargetFill, Stalled, IterationCap, TimeLimit, Interrupted };
 const char* toString(StopReason reason);
 
 // One simulation pass: the primary one, then the secondary one when it runs (4.6).
