@@ -19,6 +19,8 @@ OptionTable<FlowOptions> flowOptionTable() {
       {"field-resolution", field(&O::fieldResolution), "vector field grid cells along the longer side"},
       {"blob-resolution", field(&O::blobResolution), "blob (Voronoi) grid cells along the longer side"},
       {"lr-samples", field(&O::lrSamples), "n_f, samples of the LR functions"},
+      {"widen", field(&O::widen), "each side of an element widens, smoothly along it, where its blob leaves room, up to this many times the element's uniform width (1: uniform width, as in the thesis)"},
+      {"widen-margin", field(&O::widenMargin), "with --widen: an element widens only into room farther than this many --spacing from its blob's edge, so wide channels and pockets narrow, not every channel"},
       {"spacing", field(&O::spacing), "space kept between elements, and between elements and walls (canonical units); negative: in proportion to the gap"},
       {"iterations", field(&O::iterations), "refinement iterations (Algorithm 2)"},
       {"time-limit", field(&O::timeLimit), "stop refining after this many seconds and write the packing as it is then, with stop-reason time-limit in the report (0: no limit; a run stopped by it depends on the machine's speed). Ctrl-C does the same (interrupted); a second Ctrl-C aborts, leaving no half-written file"},

@@ -52,6 +52,8 @@ void validate(const FlowOptions& o) {
   if (!std::isfinite(o.spacing)) throw InputError("--spacing", "must be a number (≥ 0; negative: automatic)");
   if (o.iterations < 0 || o.iterations > 10000) throw InputError("--iterations", "must be 0 to 10000");
   if (!(std::isfinite(o.timeLimit) && o.timeLimit >= 0.0)) throw InputError("--time-limit", "must be a number of seconds ≥ 0 (0: none)");
+  if (!(std::isfinite(o.widen) && o.widen >= 1.0 && o.widen <= 3.0)) throw InputError("--widen", "must be 1 to 3 (1: uniform width, as in the thesis)");
+  if (!(std::isfinite(o.widenMargin) && o.widenMargin >= 0.0 && o.widenMargin <= 10.0)) throw InputError("--widen-margin", "must be 0 to 10 (spacings)");
   if (!(o.growthTolerance > 0.0 && o.growthTolerance <= 1.0)) throw InputError("--growth-tolerance", "must be in (0, 1]");
   if (!positive(o.growthLimit)) throw InputError("--growth-limit", "must be a positive number");
   if (o.maxRotationDegrees < 0 || o.maxRotationDegrees > 45) throw InputError("--max-rotation", "must be 0 to 45 degrees");
@@ -419,6 +421,10 @@ Placement FlowPacker::place(const FlowElement& e, const Region& spaceAll, const 
     const double maxEdge = extent / 100.0;
     frame.widthScale = fitWidthScale(p.outline, frame, spine, space, maxEdge, kMaxWidthOverLengthScale * lengthScale);
     if (!(frame.widthScale > 0.0)) return best;
+    if (options_.widen > 1.0) {  // where the channel beside it is wider than the margin
+      const double margin = options_.widenMargin * options_.spacing;
+      fitWidening(p.outline, frame, spine, space, margin > 0.0 ? offset(space, -margin) : space, maxEdge, options_.widen);
+    }
     Region outline = bendRegion(p.outline, frame, spine, maxEdge);
     std::vector<Shape> art = bendShapes(p.art->shapes, frame, spine, maxEdge);
     // The outline, and the art: the outline alone can miss a fold of a part inside it.

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <string>
 
@@ -61,6 +62,18 @@ std::vector<Vec2> subdivided(const std::vector<Vec2>& points, bool closed, doubl
   return out;
 }
 
+// A widening profile (StrokeFrame::widenLeft/Right) at `at` (0–1 along the element): its
+// samples lie at (i + 0.5) / n, as the LR functions'; linear between, flat beyond; 1 if empty.
+double widening(const std::vector<double>& profile, double at) {
+  const int n = static_cast<int>(profile.size());
+  if (n == 0) return 1.0;
+  const double position = std::clamp(at * n - 0.5, 0.0, static_cast<double>(n - 1));
+  const int i = std::min(static_cast<int>(position), n - 1);
+  if (i == n - 1) return profile[static_cast<std::size_t>(i)];
+  const double f = position - i;
+  return (1.0 - f) * profile[static_cast<std::size_t>(i)] + f * profile[static_cast<std::size_t>(i + 1)];
+}
+
 // The whole map of a StrokeFrame onto a streamline.
 class StrokeMap {
  public:
@@ -70,6 +83,9 @@ class StrokeMap {
     checkFinite(frame.rotation, where, "the rotation");
     checkFinite(frame.widthScale, where, "the width scale");
     if (frame.widthScale < 0.0) throw InputError(where, "the width scale must not be negative");
+    for (const std::vector<double>* profile : {&frame.widenLeft, &frame.widenRight})
+      for (double w : *profile)
+        if (!(w > 0.0) || !std::isfinite(w)) throw InputError(where, "the widening must be positive and finite");
     double spineLength = distance(frame.spineStart, frame.spineEnd);
     if (!(spineLength > 0.0) || !std::isfinite(spineLength))
       throw InputError(where, "the spine's two ends must be distinct finite points");
@@ -101,10 +117,16 @@ class StrokeMap {
   // The streamline's point and unit left normal where `along` lands.
   ArclengthFrame::Sample onCurve(double along) const { return curve_.at((along - frame_.alongMin) * arclengthPerAlong_); }
 
+  // Where `along` lies in the element's extent, 0 to 1 (clamped).
+  double at(double along) const {
+    return std::clamp((along - frame_.alongMin) / (frame_.alongMax - frame_.alongMin), 0.0, 1.0);
+  }
+
   Vec2 bend(Vec2 p) const {
     Vec2 ad = local(p);
     ArclengthFrame::Sample s = onCurve(ad.x);
-    return s.point + (frame_.widthScale * ad.y) * s.normal;
+    const double widen = widening(ad.y > 0.0 ? frame_.widenLeft : frame_.widenRight, at(ad.x));
+    return s.point + (frame_.widthScale * widen * ad.y) * s.normal;
   }
 
   std::vector<Vec2> bendPoints(const std::vector<Vec2>& points, bool closed, double maxEdge) const {
@@ -206,118 +228,163 @@ std::vector<Shape> bendShapes(const std::vector<Shape>& shapes, const StrokeFram
   return out;
 }
 
+namespace {
+
+// An outline bent at width scale 1, vertex by vertex as base + offset (its point on the
+// streamline and its unscaled normal offset), with the vertex's place along the element (0–1)
+// and side: any width, uniform or profiled, is tried without bending again.
+struct BentOutline {
+  struct Ring {
+    std::vector<Vec2> base, offset;
+    std::vector<double> at;         // 0–1 along the element
+    std::vector<std::uint8_t> left;  // on the streamline's left
+  };
+  std::vector<std::vector<Ring>> polygons;  // per polygon: outer first, then holes
+
+  BentOutline(const Region& outline, const StrokeMap& map, double maxEdge) {
+    for (const Polygon& polygon : outline) {
+      std::vector<Ring>& rings = polygons.emplace_back();
+      auto prepare = [&](const pak::Ring& ring) {
+        Ring& bent = rings.emplace_back();
+        for (Vec2 p : subdivided(ring, true, maxEdge)) {
+          Vec2 ad = map.local(p);
+          ArclengthFrame::Sample s = map.onCurve(ad.x);
+          bent.base.push_back(s.point);
+          bent.offset.push_back(ad.y * s.normal);
+          bent.at.push_back(map.at(ad.x));
+          bent.left.push_back(ad.y > 0.0 ? 1 : 0);
+        }
+      };
+      prepare(polygon.outer);
+      for (const pak::Ring& hole : polygon.holes) prepare(hole);
+    }
+  }
+
+  // The region with vertex k of ring r of polygon q at base + width(q, r, k) * offset.
+  template <typename Width>
+  void build(Region& out, Width width) const {
+    out.resize(polygons.size());
+    for (std::size_t q = 0; q < polygons.size(); ++q) {
+      Polygon& polygon = out[q];
+      polygon.holes.resize(polygons[q].size() - 1);
+      for (std::size_t r = 0; r < polygons[q].size(); ++r) {
+        const Ring& bent = polygons[q][r];
+        pak::Ring& ring = r == 0 ? polygon.outer : polygon.holes[r - 1];
+        ring.resize(bent.base.size());
+        for (std::size_t k = 0; k < ring.size(); ++k) ring[k] = bent.base[k] + width(bent, k) * bent.offset[k];
+      }
+    }
+  }
+};
+
+// Whether a region lies inside a blob, from a grid of the blob's boundary segments (no
+// Clipper): no edge of the region leaves through the boundary, one clear vertex of each ring
+// is inside, and no ring of the blob lies inside the region.
+class BlobContainment {
+ public:
+  explicit BlobContainment(const Region& blob) : blob_(blob) {
+    normalizeOrientation(blob_);  // interior on the left of every boundary edge
+    const Box box = bounds(blob_);
+    double perimeterSum = 0.0;
+    auto addRing = [&](const pak::Ring& ring) {
+      if (ring.size() < 3) return;
+      rings_.push_back(&ring);
+      const int first = static_cast<int>(positions_.size()), n = static_cast<int>(ring.size());
+      positions_.insert(positions_.end(), ring.begin(), ring.end());
+      for (int k = 0; k < n; ++k) {
+        ends_.push_back(first + k);
+        ends_.push_back(first + (k + 1) % n);
+      }
+      perimeterSum += perimeter(ring);
+    };
+    for (const Polygon& polygon : blob_) {
+      addRing(polygon.outer);
+      for (const pak::Ring& hole : polygon.holes) addRing(hole);
+    }
+    const std::size_t segments = ends_.size() / 2;
+    if (box.empty() || segments == 0) return;
+    const double diagonal = length(box.max - box.min);
+    tol_ = 1e-9 * diagonal;
+    // Cells about two boundary segments long, at most ~65k of them.
+    const double cell = std::max({2.0 * perimeterSum / static_cast<double>(segments),
+                                  std::sqrt(box.width() * box.height() / 65536.0), 1e-6 * diagonal});
+    grid_.configure(box, cell, segments);
+    grid_.rebuild(positions_.data(), ends_.data(), segments);
+    usable_ = true;
+  }
+
+  bool usable() const { return usable_; }
+  const Region& blob() const { return blob_; }
+
+  bool contains(const Region& region) const {
+    // 1. No edge leaves through the blob's boundary.
+    for (const Polygon& polygon : region)
+      for (std::size_t r = 0; r <= polygon.holes.size(); ++r) {
+        const pak::Ring& ring = r == 0 ? polygon.outer : polygon.holes[r - 1];
+        for (std::size_t k = 0, j = ring.size() - 1; k < ring.size(); j = k++) {
+          const Vec2 p = ring[j], q = ring[k];
+          const int i0 = grid_.cellX(std::min(p.x, q.x) - tol_), i1 = grid_.cellX(std::max(p.x, q.x) + tol_);
+          const int j0 = grid_.cellY(std::min(p.y, q.y) - tol_), j1 = grid_.cellY(std::max(p.y, q.y) + tol_);
+          bool leaves = false;
+          grid_.forEachNear(0.5 * (p + q), std::max(i1 - i0, j1 - j0), [&](int s) {
+            if (!leaves) leaves = leavesThrough(p, q, positions_[ends_[2 * s]], positions_[ends_[2 * s + 1]], tol_);
+          });
+          if (leaves) return false;
+        }
+      }
+    // 2. So each ring is wholly inside or wholly outside: one vertex clear of the boundary decides.
+    for (const Polygon& polygon : region)
+      for (std::size_t r = 0; r <= polygon.holes.size(); ++r) {
+        const pak::Ring& ring = r == 0 ? polygon.outer : polygon.holes[r - 1];
+        for (Vec2 p : ring) {
+          const bool inside = pointInRegion(p, blob_);
+          if (closestPointOnBoundary(p, blob_).distance <= tol_) continue;  // on it: undecided
+          if (!inside) return false;
+          break;
+        }
+      }
+    // 3. No part of the blob's boundary (a hole, another piece) lies inside the region.
+    for (const pak::Ring* ring : rings_)
+      if (pointInRegion(ring->front(), region)) return false;
+    return true;
+  }
+
+ private:
+  Region blob_;
+  std::vector<Vec2> positions_;
+  std::vector<int> ends_;
+  std::vector<const pak::Ring*> rings_;
+  SegmentGrid grid_;
+  double tol_ = 0.0;
+  bool usable_ = false;
+};
+
+// Samples of the LR functions that guess the widths.
+constexpr int kWidthSamples = 32;
+
+}  // namespace
+
 double fitWidthScale(const Region& outline, StrokeFrame frame, const Polyline& streamline, const Region& blob,
                      double maxEdge, double maxScale) {
   const char* where = "fitWidthScale";
   checkMaxEdge(maxEdge);
   if (!(maxScale > 0.0) || !std::isfinite(maxScale)) throw InputError(where, "maxScale must be a positive finite number");
-  Region blobRegion = blob;
-  normalizeOrientation(blobRegion);  // interior on the left of every boundary edge
-  Box blobBox = bounds(blobRegion);
-  if (blobBox.empty() || outline.empty()) return 0.0;
+  if (outline.empty()) return 0.0;
+  const BlobContainment containment(blob);
+  if (!containment.usable()) return 0.0;
   frame.widthScale = 1.0;
-  const StrokeMap map(frame, streamline);
-
-  // The bent outline is base + s * offset per vertex: the subdivision, the streamline
-  // lookups and the normals are shared by every trial scale.
-  struct BentRing { std::vector<Vec2> base, offset; };
-  std::vector<std::vector<BentRing>> bentPolygons;  // per polygon: outer first, then holes
-  auto prepare = [&](const Ring& ring, std::vector<BentRing>& into) {
-    BentRing& bent = into.emplace_back();
-    for (Vec2 p : subdivided(ring, true, maxEdge)) {
-      Vec2 ad = map.local(p);
-      ArclengthFrame::Sample s = map.onCurve(ad.x);
-      bent.base.push_back(s.point);
-      bent.offset.push_back(ad.y * s.normal);
-    }
-  };
-  for (const Polygon& polygon : outline) {
-    std::vector<BentRing>& rings = bentPolygons.emplace_back();
-    prepare(polygon.outer, rings);
-    for (const Ring& hole : polygon.holes) prepare(hole, rings);
-  }
-
-  // The blob's boundary segments in a uniform grid.
-  std::vector<Vec2> positions;
-  std::vector<int> ends;
-  std::vector<const Ring*> blobRings;
-  double perimeterSum = 0.0;
-  auto addBlobRing = [&](const Ring& ring) {
-    if (ring.size() < 3) return;
-    blobRings.push_back(&ring);
-    int first = static_cast<int>(positions.size()), n = static_cast<int>(ring.size());
-    positions.insert(positions.end(), ring.begin(), ring.end());
-    for (int k = 0; k < n; ++k) {
-      ends.push_back(first + k);
-      ends.push_back(first + (k + 1) % n);
-    }
-    perimeterSum += perimeter(ring);
-  };
-  for (const Polygon& polygon : blobRegion) {
-    addBlobRing(polygon.outer);
-    for (const Ring& hole : polygon.holes) addBlobRing(hole);
-  }
-  const std::size_t segmentCount = ends.size() / 2;
-  if (segmentCount == 0) return 0.0;
-  const double diagonal = length(blobBox.max - blobBox.min);
-  const double tol = 1e-9 * diagonal;
-  // Cells about two boundary segments long, at most ~65k of them.
-  double cell = std::max({2.0 * perimeterSum / segmentCount, std::sqrt(blobBox.width() * blobBox.height() / 65536.0),
-                          1e-6 * diagonal});
-  SegmentGrid grid;
-  grid.configure(blobBox, cell, segmentCount);
-  grid.rebuild(positions.data(), ends.data(), segmentCount);
-
-  Region bentRegion;
+  frame.widenLeft.clear(), frame.widenRight.clear();
+  const BentOutline bent(outline, StrokeMap(frame, streamline), maxEdge);
+  Region trial;
   auto fits = [&](double scale) {
-    bentRegion.clear();
-    for (const std::vector<BentRing>& rings : bentPolygons) {
-      Polygon& polygon = bentRegion.emplace_back();
-      for (std::size_t r = 0; r < rings.size(); ++r) {
-        Ring& ring = r == 0 ? polygon.outer : polygon.holes.emplace_back();
-        ring.resize(rings[r].base.size());
-        for (std::size_t k = 0; k < ring.size(); ++k) ring[k] = rings[r].base[k] + scale * rings[r].offset[k];
-      }
-    }
-    // 1. No bent edge leaves through the blob's boundary.
-    for (const Polygon& polygon : bentRegion) {
-      for (std::size_t r = 0; r <= polygon.holes.size(); ++r) {
-        const Ring& ring = r == 0 ? polygon.outer : polygon.holes[r - 1];
-        for (std::size_t k = 0, j = ring.size() - 1; k < ring.size(); j = k++) {
-          Vec2 p = ring[j], q = ring[k];
-          int i0 = grid.cellX(std::min(p.x, q.x) - tol), i1 = grid.cellX(std::max(p.x, q.x) + tol);
-          int j0 = grid.cellY(std::min(p.y, q.y) - tol), j1 = grid.cellY(std::max(p.y, q.y) + tol);
-          bool leaves = false;
-          grid.forEachNear(0.5 * (p + q), std::max(i1 - i0, j1 - j0), [&](int s) {
-            if (!leaves) leaves = leavesThrough(p, q, positions[ends[2 * s]], positions[ends[2 * s + 1]], tol);
-          });
-          if (leaves) return false;
-        }
-      }
-    }
-    // 2. So each bent ring is wholly inside or wholly outside: one vertex clear of the
-    // boundary decides.
-    for (const Polygon& polygon : bentRegion) {
-      for (std::size_t r = 0; r <= polygon.holes.size(); ++r) {
-        const Ring& ring = r == 0 ? polygon.outer : polygon.holes[r - 1];
-        for (Vec2 p : ring) {
-          bool inside = pointInRegion(p, blobRegion);
-          if (closestPointOnBoundary(p, blobRegion).distance <= tol) continue;  // on it: undecided
-          if (!inside) return false;
-          break;
-        }
-      }
-    }
-    // 3. No part of the blob's boundary (a hole, another piece) lies inside the element.
-    for (const Ring* ring : blobRings)
-      if (pointInRegion(ring->front(), bentRegion)) return false;
-    return true;
+    bent.build(trial, [scale](const BentOutline::Ring&, std::size_t) { return scale; });
+    return containment.contains(trial);
   };
 
   // Initial guess (3.3.5): the element's extents against the blob's, sample by sample.
-  const int samples = 32;
+  const int samples = kWidthSamples;
   LRFunction element = reflected(elementLRFunction(rotatedElement(outline, frame), frame.spineStart, frame.spineEnd, samples), frame.reflection);
-  LRFunction space = blobLRFunction(blobRegion, streamline, samples);
+  LRFunction space = blobLRFunction(containment.blob(), streamline, samples);
   double guess = maxScale;
   const double negligible = 1e-9 * std::max(element.maxLeft, element.maxRight);
   for (int i = 0; i < samples; ++i) {
@@ -348,6 +415,89 @@ double fitWidthScale(const Region& outline, StrokeFrame frame, const Polyline& s
     (fits(middle) ? lo : hi) = middle;
   }
   return lo;
+}
+
+void fitWidening(const Region& outline, StrokeFrame& frame, const Polyline& streamline, const Region& blob,
+                 const Region& room, double maxEdge, double maxWiden) {
+  checkMaxEdge(maxEdge);
+  frame.widenLeft.clear(), frame.widenRight.clear();
+  if (!(maxWiden > 1.0) || !std::isfinite(maxWiden) || !(frame.widthScale > 0.0) || outline.empty()) return;
+  const BlobContainment containment(blob);
+  if (!containment.usable()) return;
+  // Per side, how much wider than the uniform width each part could be, from the LR functions.
+  const int n = kWidthSamples;
+  const LRFunction element =
+      reflected(elementLRFunction(rotatedElement(outline, frame), frame.spineStart, frame.spineEnd, n), frame.reflection);
+  if (room.empty()) return;
+  const LRFunction space = blobLRFunction(room, streamline, n);
+  const double negligible = 1e-9 * std::max(element.maxLeft, element.maxRight);
+  // `cap`: at most this per sample (lowered where a try left the blob, below).
+  auto profile = [&](const std::vector<double>& own, const std::vector<double>& room, const std::vector<double>& cap) {
+    std::vector<double> raw(static_cast<std::size_t>(n));
+    for (std::size_t i = 0; i < raw.size(); ++i)
+      raw[i] = std::min(cap[i], own[i] > negligible ? std::clamp(room[i] / (frame.widthScale * own[i]), 1.0, maxWiden) : maxWiden);
+    // The least of each sample and its neighbours (the LR functions sample the room coarsely),
+    // then no steeper than kWidenSlope per sample either way, so the outline stays smooth.
+    std::vector<double> out(raw.size());
+    for (std::size_t i = 0; i < raw.size(); ++i)
+      out[i] = std::min({raw[i], raw[i > 0 ? i - 1 : i], raw[std::min(i + 1, raw.size() - 1)]});
+    constexpr double kWidenSlope = 0.03;
+    for (std::size_t i = 1; i < out.size(); ++i) out[i] = std::min(out[i], out[i - 1] + kWidenSlope);
+    for (std::size_t i = out.size() - 1; i-- > 0;) out[i] = std::min(out[i], out[i + 1] + kWidenSlope);
+    return out;
+  };
+  std::vector<double> capLeft(static_cast<std::size_t>(n), maxWiden), capRight = capLeft;
+  std::vector<double> left = profile(element.left, space.left, capLeft), right = profile(element.right, space.right, capRight);
+  auto none = [](const std::vector<double>& w) { return std::all_of(w.begin(), w.end(), [](double x) { return x == 1.0; }); };
+  if (none(left) && none(right)) return;
+
+  StrokeFrame unit = frame;
+  unit.widthScale = 1.0;
+  const BentOutline bent(outline, StrokeMap(unit, streamline), maxEdge);
+  Region trial;
+  const double s0 = frame.widthScale;
+  auto fits = [&](double t) {
+    bent.build(trial, [&](const BentOutline::Ring& ring, std::size_t k) {
+      return s0 * (1.0 + t * (widening(ring.left[k] ? left : right, ring.at[k]) - 1.0));
+    });
+    return containment.contains(trial);
+  };
+  // The LR functions miss the blob's corners between their samples: where a vertex of the
+  // widened outline is not inside the blob, the samples around it do not widen, a few times
+  // over; then the largest share t of what is left that fits, by bisection.
+  constexpr int kRepairs = 4;
+  for (int repair = 0; repair < kRepairs && !fits(1.0); ++repair) {
+    bool lowered = false;
+    for (std::size_t q = 0; q < bent.polygons.size(); ++q)
+      for (std::size_t r = 0; r < bent.polygons[q].size(); ++r) {
+        const BentOutline::Ring& ring = bent.polygons[q][r];
+        const Ring& placed = r == 0 ? trial[q].outer : trial[q].holes[r - 1];
+        for (std::size_t k = 0; k < placed.size(); ++k) {
+          if (pointInRegion(placed[k], containment.blob())) continue;
+          std::vector<double>& cap = ring.left[k] ? capLeft : capRight;
+          const int i = std::clamp(static_cast<int>(ring.at[k] * n), 0, n - 1);
+          for (int j = std::max(0, i - 1); j <= std::min(n - 1, i + 1); ++j) cap[static_cast<std::size_t>(j)] = 1.0;
+          lowered = true;
+        }
+      }
+    if (!lowered) break;  // an edge, not a vertex, leaves: the bisection below decides
+    left = profile(element.left, space.left, capLeft);
+    right = profile(element.right, space.right, capRight);
+  }
+  double lo = 0.0, hi = 1.0;
+  if (!fits(1.0)) {
+    if (!fits(0.0)) return;  // the uniform width itself is on the edge: keep it
+    for (int round = 0; round < 7; ++round) {
+      const double middle = 0.5 * (lo + hi);
+      (fits(middle) ? lo : hi) = middle;
+    }
+  } else {
+    lo = 1.0;
+  }
+  if (lo <= 0.0 || (none(left) && none(right))) return;
+  frame.widenLeft.resize(left.size()), frame.widenRight.resize(right.size());
+  for (std::size_t i = 0; i < left.size(); ++i) frame.widenLeft[i] = 1.0 + lo * (left[i] - 1.0);
+  for (std::size_t i = 0; i < right.size(); ++i) frame.widenRight[i] = 1.0 + lo * (right[i] - 1.0);
 }
 
 }  // namespace pak

@@ -255,6 +255,50 @@ TEST(SkeletalStroke, FitWidthScaleSeesABlobHoleInsideTheElement) {
   EXPECT_NEAR(s, 0.8 / 0.5, 2e-3);
 }
 
+// A bar in a blob twice as roomy on its left past x = 2 of the streamline: the left
+// side widens there, smoothly, up to the cap, and stays in the blob; the right side keeps
+// the uniform width.
+TEST(SkeletalStroke, FitWideningWidensEachSideWhereTheBlobLeavesRoom) {
+  const Region outline = rectangle(0, -0.5, 4, 0.5);
+  const Polyline line = straight({0, 0}, {10, 0}, 10);
+  Region blob = {Polygon{{{-1, -1}, {11, -1}, {11, 2}, {2, 2}, {2, 1}, {-1, 1}}, {}}};
+  normalizeOrientation(blob);
+  StrokeFrame frame = strokeFrameFor(outline, {0, 0}, {4, 0});
+  frame.widthScale = fitWidthScale(outline, frame, line, blob, 0.25, 100.0);
+  ASSERT_NEAR(frame.widthScale, 2.0, 2e-3);
+  const double uniformArea = area(bendRegion(outline, frame, line, 0.25));
+
+  fitWidening(outline, frame, line, blob, blob, 0.25, 1.0);
+  EXPECT_TRUE(frame.widenLeft.empty() && frame.widenRight.empty());  // 1: the thesis's uniform width
+
+  fitWidening(outline, frame, line, blob, blob, 0.25, 1.5);
+  ASSERT_EQ(frame.widenLeft.size(), frame.widenRight.size());
+  ASSERT_FALSE(frame.widenLeft.empty());
+  for (double w : frame.widenRight) EXPECT_NEAR(w, 1.0, 1e-3);  // the uniform fit is to 5e-4
+  EXPECT_NEAR(frame.widenLeft.front(), 1.0, 1e-3);
+  EXPECT_GT(frame.widenLeft.back(), 1.45);
+  for (std::size_t i = 0; i < frame.widenLeft.size(); ++i) {
+    EXPECT_LE(frame.widenLeft[i], 1.5);
+    if (i > 0) EXPECT_LE(std::abs(frame.widenLeft[i] - frame.widenLeft[i - 1]), 0.03 + 1e-12);
+  }
+  const Region widened = bendRegion(outline, frame, line, 0.25);
+  EXPECT_LT(area(subtract(widened, blob)), 1e-9 * area(widened));
+  EXPECT_GT(area(widened), 1.05 * uniformArea);
+
+  // Up to the room, not past it: past x = 2 the left has 2 of room against a uniform half-width
+  // of 1 (the slope limit allows about 1.7 by the end). Inset by a margin of 0.5 it has 1.5 there,
+  // and 0.5 before (less than 1: no widening).
+  fitWidening(outline, frame, line, blob, blob, 0.25, 3.0);
+  const std::vector<double> full = frame.widenLeft;
+  EXPECT_GT(full.back(), 1.6);
+  EXPECT_LE(full.back(), 2.0 + 1e-3);
+  fitWidening(outline, frame, line, blob, offset(blob, -0.5), 0.25, 3.0);
+  for (double w : frame.widenRight) EXPECT_NEAR(w, 1.0, 1e-3);
+  EXPECT_NEAR(frame.widenLeft.front(), 1.0, 1e-3);
+  EXPECT_NEAR(frame.widenLeft.back(), 1.5, 0.01);
+  for (std::size_t i = 0; i < full.size(); ++i) EXPECT_LE(frame.widenLeft[i], full[i] + 1e-12);
+}
+
 TEST(SkeletalStroke, BadInputThrows) {
   StrokeFrame frame = strokeFrameFor(element(), {0, 0}, {4, 0});
   Polyline line = straight({0, 0}, {8, 0}, 2);

@@ -41,6 +41,13 @@ struct FlowOptions {
   // --- blobs and placement (3.3.4, 3.3.5)
   int blobResolution = 512;   // Voronoi grid cells along the longer side
   int lrSamples = 100;        // n_f
+  // Each side of a placed element widens where its blob leaves room, part by part, up to this
+  // many times its uniform width (fitWidening); 1: uniform, as in the thesis. It widens only
+  // into room farther than widenMargin × spacing from the blob's edge (and the others' skins),
+  // so that it narrows the wide channels and pockets, not every channel: the negative space
+  // gets more even, not only smaller (docs/flowpak.md, "Widening").
+  double widen = 1.6;
+  double widenMargin = 1.25;
   // --- refinement (3.3.6, Algorithm 2)
   int iterations = 15;
   // Seconds of wall time from the start after which refinement stops, between two of its

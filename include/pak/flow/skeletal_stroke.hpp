@@ -18,6 +18,10 @@ struct StrokeFrame {
   Reflection reflection = Reflection::None;
   double rotation = 0.0;         // radians, the element turned about its spine's midpoint first
   double widthScale = 1.0;
+  // Widening along the element (Pak; the thesis scales the width uniformly): factors of
+  // widthScale on the streamline's left and right, at n points (i + 0.5) / n of the extent,
+  // linear between; empty: 1 everywhere (fitWidening).
+  std::vector<double> widenLeft, widenRight;
 };
 
 // The frame for an element outline: its spine line and its extent along it. With a
@@ -50,5 +54,13 @@ std::vector<Shape> bendShapes(const std::vector<Shape>& shapes, const StrokeFram
 // grid-based containment test (no Clipper).
 double fitWidthScale(const Region& outline, StrokeFrame frame, const Polyline& streamline,
                      const Region& blob, double maxEdge, double maxScale);
+// After fitWidthScale: widens each side of the element, part by part, where the blob leaves
+// room, by at most `maxWiden` × the uniform width, smoothly (the profile changes by at most
+// 3 % of the width per 32nd of the length), so that a teardrop's thin end or a leaf in an
+// uneven blob fills more of it. Sets frame.widenLeft/Right (cleared: none; maxWiden ≤ 1
+// leaves them empty). The largest share of the profile that keeps the outline in the blob is
+// kept, to 1/128.
+void fitWidening(const Region& outline, StrokeFrame& frame, const Polyline& streamline, const Region& blob,
+                 const Region& room, double maxEdge, double maxWiden);
 
 }  // namespace pak
