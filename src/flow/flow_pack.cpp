@@ -421,10 +421,7 @@ Placement FlowPacker::place(const FlowElement& e, const Region& spaceAll, const 
     const double maxEdge = extent / 100.0;
     frame.widthScale = fitWidthScale(p.outline, frame, spine, space, maxEdge, kMaxWidthOverLengthScale * lengthScale);
     if (!(frame.widthScale > 0.0)) return best;
-    if (options_.widen > 1.0) {  // where the channel beside it is wider than the margin
-      const double margin = options_.widenMargin * options_.spacing;
-      fitWidening(p.outline, frame, spine, space, margin > 0.0 ? offset(space, -margin) : space, maxEdge, options_.widen);
-    }
+    fitWidening(p.outline, frame, spine, space, options_.widenMargin * options_.spacing, maxEdge, options_.widen);
     Region outline = bendRegion(p.outline, frame, spine, maxEdge);
     std::vector<Shape> art = bendShapes(p.art->shapes, frame, spine, maxEdge);
     // The outline, and the art: the outline alone can miss a fold of a part inside it.

@@ -316,21 +316,24 @@ class BlobContainment {
   bool usable() const { return usable_; }
   const Region& blob() const { return blob_; }
 
+  // Whether segment pq leaves the blob through its boundary.
+  bool leaves(Vec2 p, Vec2 q) const {
+    const int i0 = grid_.cellX(std::min(p.x, q.x) - tol_), i1 = grid_.cellX(std::max(p.x, q.x) + tol_);
+    const int j0 = grid_.cellY(std::min(p.y, q.y) - tol_), j1 = grid_.cellY(std::max(p.y, q.y) + tol_);
+    bool out = false;
+    grid_.forEachNear(0.5 * (p + q), std::max(i1 - i0, j1 - j0), [&](int s) {
+      if (!out) out = leavesThrough(p, q, positions_[ends_[2 * s]], positions_[ends_[2 * s + 1]], tol_);
+    });
+    return out;
+  }
+
   bool contains(const Region& region) const {
     // 1. No edge leaves through the blob's boundary.
     for (const Polygon& polygon : region)
       for (std::size_t r = 0; r <= polygon.holes.size(); ++r) {
         const pak::Ring& ring = r == 0 ? polygon.outer : polygon.holes[r - 1];
-        for (std::size_t k = 0, j = ring.size() - 1; k < ring.size(); j = k++) {
-          const Vec2 p = ring[j], q = ring[k];
-          const int i0 = grid_.cellX(std::min(p.x, q.x) - tol_), i1 = grid_.cellX(std::max(p.x, q.x) + tol_);
-          const int j0 = grid_.cellY(std::min(p.y, q.y) - tol_), j1 = grid_.cellY(std::max(p.y, q.y) + tol_);
-          bool leaves = false;
-          grid_.forEachNear(0.5 * (p + q), std::max(i1 - i0, j1 - j0), [&](int s) {
-            if (!leaves) leaves = leavesThrough(p, q, positions_[ends_[2 * s]], positions_[ends_[2 * s + 1]], tol_);
-          });
-          if (leaves) return false;
-        }
+        for (std::size_t k = 0, j = ring.size() - 1; k < ring.size(); j = k++)
+          if (leaves(ring[j], ring[k])) return false;
       }
     // 2. So each ring is wholly inside or wholly outside: one vertex clear of the boundary decides.
     for (const Polygon& polygon : region)
@@ -418,7 +421,7 @@ double fitWidthScale(const Region& outline, StrokeFrame frame, const Polyline& s
 }
 
 void fitWidening(const Region& outline, StrokeFrame& frame, const Polyline& streamline, const Region& blob,
-                 const Region& room, double maxEdge, double maxWiden) {
+                 double margin, double maxEdge, double maxWiden) {
   checkMaxEdge(maxEdge);
   frame.widenLeft.clear(), frame.widenRight.clear();
   if (!(maxWiden > 1.0) || !std::isfinite(maxWiden) || !(frame.widthScale > 0.0) || outline.empty()) return;
@@ -428,8 +431,10 @@ void fitWidening(const Region& outline, StrokeFrame& frame, const Polyline& stre
   const int n = kWidthSamples;
   const LRFunction element =
       reflected(elementLRFunction(rotatedElement(outline, frame), frame.spineStart, frame.spineEnd, n), frame.reflection);
-  if (room.empty()) return;
-  const LRFunction space = blobLRFunction(room, streamline, n);
+  // The room past the margin, measured along the streamline's normals as the LR functions are.
+  LRFunction space = blobLRFunction(containment.blob(), streamline, n);
+  for (std::vector<double>* side : {&space.left, &space.right})
+    for (double& extent : *side) extent = std::max(0.0, extent - margin);
   const double negligible = 1e-9 * std::max(element.maxLeft, element.maxRight);
   // `cap`: at most this per sample (lowered where a try left the blob, below).
   auto profile = [&](const std::vector<double>& own, const std::vector<double>& room, const std::vector<double>& cap) {
@@ -462,9 +467,9 @@ void fitWidening(const Region& outline, StrokeFrame& frame, const Polyline& stre
     });
     return containment.contains(trial);
   };
-  // The LR functions miss the blob's corners between their samples: where a vertex of the
-  // widened outline is not inside the blob, the samples around it do not widen, a few times
-  // over; then the largest share t of what is left that fits, by bisection.
+  // The LR functions miss the blob's corners between their samples: where an edge of the
+  // widened outline leaves the blob, or a vertex is not inside it, the samples around do not
+  // widen, a few times over; then the largest share t of what is left that fits, by bisection.
   constexpr int kRepairs = 4;
   for (int repair = 0; repair < kRepairs && !fits(1.0); ++repair) {
     bool lowered = false;
@@ -472,12 +477,15 @@ void fitWidening(const Region& outline, StrokeFrame& frame, const Polyline& stre
       for (std::size_t r = 0; r < bent.polygons[q].size(); ++r) {
         const BentOutline::Ring& ring = bent.polygons[q][r];
         const Ring& placed = r == 0 ? trial[q].outer : trial[q].holes[r - 1];
-        for (std::size_t k = 0; k < placed.size(); ++k) {
-          if (pointInRegion(placed[k], containment.blob())) continue;
+        auto hold = [&](std::size_t k) {  // the samples around vertex k do not widen
           std::vector<double>& cap = ring.left[k] ? capLeft : capRight;
           const int i = std::clamp(static_cast<int>(ring.at[k] * n), 0, n - 1);
           for (int j = std::max(0, i - 1); j <= std::min(n - 1, i + 1); ++j) cap[static_cast<std::size_t>(j)] = 1.0;
           lowered = true;
+        };
+        for (std::size_t k = 0, j = placed.size() - 1; k < placed.size(); j = k++) {
+          if (containment.leaves(placed[j], placed[k])) hold(j), hold(k);
+          else if (!pointInRegion(placed[k], containment.blob())) hold(k);
         }
       }
     if (!lowered) break;  // an edge, not a vertex, leaves: the bisection below decides

@@ -268,10 +268,10 @@ TEST(SkeletalStroke, FitWideningWidensEachSideWhereTheBlobLeavesRoom) {
   ASSERT_NEAR(frame.widthScale, 2.0, 2e-3);
   const double uniformArea = area(bendRegion(outline, frame, line, 0.25));
 
-  fitWidening(outline, frame, line, blob, blob, 0.25, 1.0);
+  fitWidening(outline, frame, line, blob, 0.0, 0.25, 1.0);
   EXPECT_TRUE(frame.widenLeft.empty() && frame.widenRight.empty());  // 1: the thesis's uniform width
 
-  fitWidening(outline, frame, line, blob, blob, 0.25, 1.5);
+  fitWidening(outline, frame, line, blob, 0.0, 0.25, 1.5);
   ASSERT_EQ(frame.widenLeft.size(), frame.widenRight.size());
   ASSERT_FALSE(frame.widenLeft.empty());
   for (double w : frame.widenRight) EXPECT_NEAR(w, 1.0, 1e-3);  // the uniform fit is to 5e-4
@@ -288,11 +288,11 @@ TEST(SkeletalStroke, FitWideningWidensEachSideWhereTheBlobLeavesRoom) {
   // Up to the room, not past it: past x = 2 the left has 2 of room against a uniform half-width
   // of 1 (the slope limit allows about 1.7 by the end). Inset by a margin of 0.5 it has 1.5 there,
   // and 0.5 before (less than 1: no widening).
-  fitWidening(outline, frame, line, blob, blob, 0.25, 3.0);
+  fitWidening(outline, frame, line, blob, 0.0, 0.25, 3.0);
   const std::vector<double> full = frame.widenLeft;
   EXPECT_GT(full.back(), 1.6);
   EXPECT_LE(full.back(), 2.0 + 1e-3);
-  fitWidening(outline, frame, line, blob, offset(blob, -0.5), 0.25, 3.0);
+  fitWidening(outline, frame, line, blob, 0.5, 0.25, 3.0);
   for (double w : frame.widenRight) EXPECT_NEAR(w, 1.0, 1e-3);
   EXPECT_NEAR(frame.widenLeft.front(), 1.0, 1e-3);
   EXPECT_NEAR(frame.widenLeft.back(), 1.5, 0.01);

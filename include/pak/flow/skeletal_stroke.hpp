@@ -55,12 +55,13 @@ std::vector<Shape> bendShapes(const std::vector<Shape>& shapes, const StrokeFram
 double fitWidthScale(const Region& outline, StrokeFrame frame, const Polyline& streamline,
                      const Region& blob, double maxEdge, double maxScale);
 // After fitWidthScale: widens each side of the element, part by part, where the blob leaves
-// room, by at most `maxWiden` × the uniform width, smoothly (the profile changes by at most
+// room farther than `margin` from its edge (along the streamline's normals), by at most
+// `maxWiden` × the uniform width, smoothly (the profile changes by at most
 // 3 % of the width per 32nd of the length), so that a teardrop's thin end or a leaf in an
 // uneven blob fills more of it. Sets frame.widenLeft/Right (cleared: none; maxWiden ≤ 1
 // leaves them empty). The largest share of the profile that keeps the outline in the blob is
 // kept, to 1/128.
 void fitWidening(const Region& outline, StrokeFrame& frame, const Polyline& streamline, const Region& blob,
-                 const Region& room, double maxEdge, double maxWiden);
+                 double margin, double maxEdge, double maxWiden);
 
 }  // namespace pak
