@@ -77,15 +77,16 @@ bool isEffectivelyClosed(const Subpath& subpath, double epsilon) {
 }
 
 // The region a closed shape encloses, whatever its paint (a container drawn as an outline
-// with fill="none" is still a container).
+// with fill="none" is still a container). A filled shape's open subpaths enclose what every
+// renderer fills, as if closed (the reader warns); an open outline encloses nothing.
 Region enclosedRegion(const SvgShape& shape, const std::string& file, std::size_t index, double epsilon,
                       const ClipOptions& clip) {
   std::vector<Ring> rings;
   for (const Subpath& subpath : shape.subpaths) {
     if (subpath.points.size() < 2) continue;
-    if (!isEffectivelyClosed(subpath, epsilon))
+    if (!shape.fill && !isEffectivelyClosed(subpath, epsilon))
       throw InputError(placeOf(file, shape), "container path '" + shapeName(shape, index) +
-                                                 "' is not closed (end it with Z, or close it in your editor)");
+                                                 "' is not closed and not filled (end it with Z, or close it in your editor)");
     if (subpath.points.size() >= 3) rings.push_back(subpath.points);
   }
   if (rings.empty()) return {};

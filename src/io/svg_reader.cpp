@@ -29,6 +29,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "io/rgb_components.hpp"
 #include "pak/error.hpp"
 #include "pak/io/text_file.hpp"
 
@@ -1104,6 +1105,22 @@ void applyStylesheets(rapidxml_ns::xml_document<char>& xml, XmlNode* root) {
   });
 }
 
+// rgb() with decimal components, which Inkscape writes, rounded for SVG++ (rgb_components.hpp):
+// in the paint and colour attributes and in style (stylesheets already applied).
+void roundRgbComponents(rapidxml_ns::xml_document<char>& xml, XmlNode* root) {
+  constexpr std::string_view kColourAttributes[] = {"fill", "stroke", "color", "stop-color", "flood-color",
+                                                    "lighting-color", "style"};
+  forEachElement(root, [&](XmlNode* node) {
+    for (auto* a = node->first_attribute(); a; a = a->next_attribute()) {
+      const std::string_view name(a->local_name(), a->local_name_size());
+      if (std::find(std::begin(kColourAttributes), std::end(kColourAttributes), name) == std::end(kColourAttributes))
+        continue;
+      if (const std::optional<std::string> rounded = roundedRgbComponents({a->value(), a->value_size()}))
+        a->value(xml.allocate_string(rounded->c_str(), rounded->size()), rounded->size());
+    }
+  });
+}
+
 std::string parseErrorPlace(const std::vector<char>& buffer, const char* where) {
   if (!where || where < buffer.data() || where > buffer.data() + buffer.size())
     return "";
@@ -1337,6 +1354,7 @@ SvgDocument readSvgString(const std::string& text, const std::string& name, cons
     throw InputError(name, "not an SVG document: the root element is <" + rootName + ">, not <svg>");
   adoptSvgNamespace(root);
   applyStylesheets(xml, root);
+  roundRgbComponents(xml, root);
 
   const LineIndex lines(buffer);
   ReaderState state;

@@ -115,9 +115,17 @@ TEST(SceneLoader, PathFileContainerIsBoundaryMinusHoles) {
 
 TEST(SceneLoaderErrors, UnclosedContainerPath) {
   const std::string message = errorOf([] {
-    sceneFromDocument(svgDocument(R"~(<g id="container"><path id="outline" d="M0 0 L50 0 L50 50"/></g>)~", "open.svg"));
+    sceneFromDocument(
+        svgDocument(R"~(<g id="container"><path id="outline" d="M0 0 L50 0 L50 50" fill="none" stroke="red"/></g>)~", "open.svg"));
   });
-  EXPECT_NE(message.find("open.svg:1: container path 'outline' is not closed"), std::string::npos) << message;
+  EXPECT_NE(message.find("open.svg:1: container path 'outline' is not closed and not filled"), std::string::npos) << message;
+}
+
+// Every editor and browser fills an open subpath as if closed, so a filled one encloses that.
+TEST(SceneLoader, AFilledContainerPathWithoutZEnclosesWhatItFills) {
+  const LoadedScene loaded = sceneFromDocument(svgDocument(
+      R"~(<g id="container"><path d="M0 0 L100 0 L100 100 L0 100 Z M20 20 L80 20 L80 80 L20 80" fill="#ccc" fill-rule="evenodd"/></g>)~"));
+  EXPECT_NEAR(area(loaded.scene.container), 10000 - 3600, 1e-6);
 }
 
 TEST(SceneLoaderErrors, BadContainerAttributesNameTheShapesLine) {

@@ -314,6 +314,22 @@ TEST(SvgReaderPaint, ColoursFromAttributesStyleAndGroups) {
   EXPECT_EQ(*document.shapes[4].fill, (Color{0x12, 0x34, 0x56, 1.0}));
 }
 
+// Inkscape writes rgb() with decimal components (CSS Color 4); they round to the nearest
+// integer instead of being refused, in attributes, style and stylesheets alike.
+TEST(SvgReaderPaint, RgbWithDecimalComponentsRounds) {
+  SvgDocument document = read(
+      R"~(<style>.s { stroke: rgb(0.4, 254.6, 9e1) }</style>)~"
+      R"~(<rect width="10" height="10" fill="rgb(12.5, 100.2, 200)"/>)~"
+      R"~(<rect width="10" height="10" class="s" style="fill:RGB(300.7, -2.2, 10.49)"/>)~"
+      R"~(<rect width="10" height="10" fill="rgb(10%, 50.5%, 100%)"/>)~");
+  ASSERT_EQ(document.shapes.size(), 3u);
+  EXPECT_EQ(*document.shapes[0].fill, (Color{13, 100, 200, 1.0}));
+  EXPECT_EQ(*document.shapes[1].fill, (Color{255, 0, 10, 1.0}));  // clamped to 0-255
+  EXPECT_EQ(*document.shapes[1].stroke, (Color{0, 255, 90, 1.0}));
+  EXPECT_EQ(*document.shapes[2].fill, (Color{25, 128, 255, 1.0}));  // percentages as before
+  EXPECT_TRUE(document.warnings.empty()) << (document.warnings.empty() ? "" : document.warnings.front().message);
+}
+
 TEST(SvgReaderPaint, OpacitiesMultiplyDownTheTree) {
   SvgDocument document = read(R"~(<g opacity="0.5"><g style="opacity:0.5">
       <rect width="1" height="1" opacity="0.8" fill-opacity="0.25" stroke="red" stroke-opacity="0.75"/></g></g>)~");
