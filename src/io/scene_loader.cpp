@@ -208,7 +208,13 @@ LoadedScene sceneFromDocument(const SvgDocument& document, const SceneOptions& s
     } else if (hasContainerLayer ? shape.layer == containerLayer : !isHelperLayer(shape.layer)) {
       // Without a container layer, every shape outside the helper layers outlines the container.
       // A container layer keeps the artist's styling; a file that is a container by itself is
-      // drawn as an outline.
+      // drawn as an outline, and what it does not paint is not part of it (icon sets such as
+      // Tabler draw an invisible bounding square first).
+      if (!hasContainerLayer && !shape.fill && (!shape.stroke || !(shape.strokeWidth > 0.0))) {
+        loaded.warnings.push_back({document.file + ": " + shapeName(shape, i),
+                                   "paints nothing (no fill, no stroke); not part of the container"});
+        continue;
+      }
       layout.containerShapes.push_back({shape, shape.layer == "container"});
       Region region = enclosedRegion(shape, document.file, i, closeEpsilon, clip);
       if (area(region) <= 0.0) {

@@ -121,6 +121,16 @@ TEST(SceneLoaderErrors, UnclosedContainerPath) {
   EXPECT_NE(message.find("open.svg:1: container path 'outline' is not closed and not filled"), std::string::npos) << message;
 }
 
+// Tabler's icons start with an invisible bounding square: it is not the container.
+TEST(SceneLoader, AShapeThatPaintsNothingIsNotPartOfAContainerFile) {
+  const LoadedScene loaded = sceneFromDocument(svgDocument(
+      R"~(<path stroke="none" d="M0 0h100v100H0z" fill="none"/><circle cx="50" cy="50" r="30" fill="none" stroke="#000" stroke-width="2"/>)~"));
+  EXPECT_NEAR(area(loaded.scene.container), 3.14159265 * 900, 3.14159265 * 900 * 2e-3);
+  ASSERT_EQ(loaded.layout.containerShapes.size(), 1u);
+  ASSERT_EQ(loaded.warnings.size(), 1u);
+  EXPECT_NE(loaded.warnings[0].message.find("paints nothing"), std::string::npos);
+}
+
 // Every editor and browser fills an open subpath as if closed, so a filled one encloses that.
 TEST(SceneLoader, AFilledContainerPathWithoutZEnclosesWhatItFills) {
   const LoadedScene loaded = sceneFromDocument(svgDocument(
