@@ -488,7 +488,7 @@ void fitWidening(const Region& outline, StrokeFrame& frame, const Polyline& stre
           else if (!pointInRegion(placed[k], containment.blob())) hold(k);
         }
       }
-    if (!lowered) break;  // an edge, not a vertex, leaves: the bisection below decides
+    if (!lowered) break;  // nothing to blame on a sample (a hole of the blob inside the element): bisect
     left = profile(element.left, space.left, capLeft);
     right = profile(element.right, space.right, capRight);
   }
