@@ -471,7 +471,8 @@ void fitWidening(const Region& outline, StrokeFrame& frame, const Polyline& stre
   // widened outline leaves the blob, or a vertex is not inside it, the samples around do not
   // widen, a few times over; then the largest share t of what is left that fits, by bisection.
   constexpr int kRepairs = 4;
-  for (int repair = 0; repair < kRepairs && !fits(1.0); ++repair) {
+  bool whole = fits(1.0);  // the whole profile fits (`trial` holds it)
+  for (int repair = 0; repair < kRepairs && !whole; ++repair) {
     bool lowered = false;
     for (std::size_t q = 0; q < bent.polygons.size(); ++q)
       for (std::size_t r = 0; r < bent.polygons[q].size(); ++r) {
@@ -491,16 +492,17 @@ void fitWidening(const Region& outline, StrokeFrame& frame, const Polyline& stre
     if (!lowered) break;  // nothing to blame on a sample (a hole of the blob inside the element): bisect
     left = profile(element.left, space.left, capLeft);
     right = profile(element.right, space.right, capRight);
+    whole = fits(1.0);
   }
-  double lo = 0.0, hi = 1.0;
-  if (!fits(1.0)) {
+  double lo = 1.0;
+  if (!whole) {
     if (!fits(0.0)) return;  // the uniform width itself is on the edge: keep it
+    double hi = 1.0;
+    lo = 0.0;
     for (int round = 0; round < 7; ++round) {
       const double middle = 0.5 * (lo + hi);
       (fits(middle) ? lo : hi) = middle;
     }
-  } else {
-    lo = 1.0;
   }
   if (lo <= 0.0 || (none(left) && none(right))) return;
   frame.widenLeft.resize(left.size()), frame.widenRight.resize(right.size());

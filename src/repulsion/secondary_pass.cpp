@@ -101,8 +101,7 @@ void secondaryPass(const RepulsionRun& run, const PackingSimulation& primary, co
     pass.stopReason = simulate(second, run, stop, options.secondary.targetFill, primaryIterations, callbacks, collect);
     // The primaries, frozen while the secondaries grew, are freed and pressed with them into
     // the pockets both left (docs/secondary-fixed-rigid.md); then the clean-up.
-    if (options.secondary.pressIterations > 0 && pass.stopReason != StopReason::TimeLimit &&
-        pass.stopReason != StopReason::Interrupted) {
+    if (options.secondary.pressIterations > 0 && !stoppedEarly(pass.stopReason)) {
       for (std::size_t m = 0; m < primary.meshes().size(); ++m) second.meshes()[m].frozen = primary.meshes()[m].frozen;
       press(second, run, stop, options.secondary.pressIterations);
     }

@@ -33,6 +33,8 @@ struct PlacedElement {
 // (Ctrl-C). The two stops that depend on the machine or the user.
 enum class StopReason { TargetFill, Stalled, IterationCap, TimeLimit, Interrupted };
 const char* toString(StopReason reason);
+// Whether the clock or the user cut the run short (what follows should be quick).
+inline bool stoppedEarly(StopReason reason) { return reason == StopReason::TimeLimit || reason == StopReason::Interrupted; }
 
 // One simulation pass: the primary one, then the secondary one when it runs (4.6).
 struct PackingPass {
