@@ -28,12 +28,13 @@ nlohmann::json flowReport(const FlowArguments& args, const FlowPacking& packing,
   nlohmann::json parameters;
   flowOptions().report(parameters, args);
   nlohmann::json report =
-      reportWithParameters(parameters, "distances in canonical units: l_canvas (the larger side of the containers' and fixed elements' bounds) is 1000");
+      reportWithParameters(parameters, "distances in canonical units: l_canvas (the larger side of the containers' and fixed elements' bounds) is 1000", args.common.lengths);
   report["scene"] = args.scene;
   report["elements-library"] = args.elements;
   report["element-count"] = packing.elements.size();
   report["gap-element-count"] = packing.gapElements.size();
   report["streamline-count"] = packing.streamlines.size();
+  report["infill-element-count"] = packing.infilled;  // of element-count: added in pockets (--infill-every)
   report["iterations"] = packing.iterations;
   report["stop-reason"] = toString(packing.stopReason);
   report["placements-tried"] = packing.placementsTried;

@@ -57,6 +57,9 @@ void validate(const FlowOptions& o) {
   if (!(o.growthTolerance > 0.0 && o.growthTolerance <= 1.0)) throw InputError("--growth-tolerance", "must be in (0, 1]");
   if (!positive(o.growthLimit)) throw InputError("--growth-limit", "must be a positive number");
   if (o.maxRotationDegrees < 0 || o.maxRotationDegrees > 45) throw InputError("--max-rotation", "must be 0 to 45 degrees");
+  if (o.infillEvery < 0) throw InputError("--infill-every", "must be ≥ 0 (0: no infill)");
+  if (!(std::isfinite(o.infillWidth) && o.infillWidth > 0.0 && o.infillWidth <= 10.0)) throw InputError("--infill-width", "must be in (0, 10] (gaps)");
+  if (!(std::isfinite(o.infillMinArea) && o.infillMinArea >= 0.0 && o.infillMinArea <= 10.0)) throw InputError("--infill-min-area", "must be 0 to 10 (shares of the median element)");
   if (!(std::isfinite(o.fillGapsInset) && o.fillGapsInset >= 0.0)) throw InputError("--fill-gaps-inset", "must be ≥ 0");
   if (o.mirror && !(std::isfinite(o.mirror->from.x) && std::isfinite(o.mirror->from.y) && std::isfinite(o.mirror->to.x) &&
                     std::isfinite(o.mirror->to.y) && o.mirror->from != o.mirror->to))
@@ -137,6 +140,7 @@ class FlowPacker {
   Step proposeGrowth(std::size_t i) const;
   ShiftOptions shiftOptions() const;
   void refine();
+  int infill();
   void fillGaps();
   void mirror();
   void report(const std::string& phase, int iteration);
@@ -511,6 +515,7 @@ void FlowPacker::refine() {
       packing_.stopReason = deadline_.requested() ? StopReason::Interrupted : StopReason::TimeLimit;
       break;  // the waves done are kept: each accepted step left the packing clean
     }
+    if (options_.infillEvery > 0 && iteration % options_.infillEvery == 0) packing_.infilled += infill();
     packing_.iterations = iteration;
     packing_.areaPerIteration.push_back(totalArea());
     report("refinement", iteration);
@@ -593,6 +598,54 @@ ShiftOptions FlowPacker::shiftOptions() const {
   return shift;
 }
 
+// Each piece of room (the free space at least `spacing` from every element) wide enough for
+// an element: a streamline traced along the field through the middle of its widest part, and
+// the element that fits there (FlowOptions::infillEvery). Returns how many were kept.
+int FlowPacker::infill() {
+  if (packing_.elements.empty()) return 0;
+  const Region room = subtract(freeShrunk_, unite(skins_));
+  const Region cores = offset(room, -0.5 * options_.infillWidth * options_.gap);
+  std::vector<double> areas;
+  for (const FlowElement& e : packing_.elements) areas.push_back(e.area);
+  std::nth_element(areas.begin(), areas.begin() + static_cast<std::ptrdiff_t>(areas.size() / 2), areas.end());
+  const double minArea = options_.infillMinArea * areas[areas.size() / 2];
+  const double step = 0.5 * options_.sampleSpacing;
+  int added = 0;
+  for (const Polygon& core : cores) {
+    // The core's centroid, or for a bent core its vertex nearest the centroid (still a core
+    // width deep in the room).
+    const Vec2 c = centroid(core.outer);
+    Vec2 seed = c;
+    if (!pointInPolygon(c, core))
+      seed = *std::min_element(core.outer.begin(), core.outer.end(),
+                               [&](Vec2 a, Vec2 b) { return distance(a, c) < distance(b, c); });
+    const auto k = std::find_if(packing_.containers.begin(), packing_.containers.end(),
+                                [&](const Region& r) { return pointInRegion(seed, r); }) - packing_.containers.begin();
+    const auto piece = std::find_if(room.begin(), room.end(), [&](const Polygon& p) { return pointInPolygon(seed, p); });
+    if (k == static_cast<std::ptrdiff_t>(packing_.containers.size()) || piece == room.end()) continue;
+    const VectorField& field = packing_.fields[static_cast<std::size_t>(k)];
+    const Vec2 along = field.values.empty() ? Vec2{} : field.at(seed);
+    if (!(length(along) > 0.0)) continue;
+    FlowElement e;
+    e.container = static_cast<int>(k);
+    e.blob = Region{*piece};
+    e.streamline = extendToBlob({seed - along * (0.5 * step), seed + along * (0.5 * step)}, e.blob, field, step);
+    packing_.elements.push_back(std::move(e));
+    skins_.emplace_back();
+    const std::size_t i = packing_.elements.size() - 1;
+    const Placement p = place(packing_.elements[i], placementSpace(i, packing_.elements[i].blob),
+                              packing_.elements[i].streamline, true);
+    if (p.ok && p.area >= minArea) {
+      accept(i, p);
+      ++added;
+    } else {
+      packing_.elements.pop_back();
+      skins_.pop_back();
+    }
+  }
+  return added;
+}
+
 // Figure 3.15: new shapes made from the negative space between the placed elements, inset
 // from them and rounded by an opening so slivers vanish.
 void FlowPacker::fillGaps() {
@@ -634,6 +687,7 @@ void FlowPacker::mirror() {
     normalizeOrientation(r);
     return r;
   };
+  packing_.infilled *= 2;
   for (auto* list : {&packing_.elements, &packing_.gapElements}) {
     const std::size_t n = list->size();
     for (std::size_t i = 0; i < n; ++i) {

@@ -153,6 +153,7 @@ TEST(FlowPack, AnyThreadCountGivesTheSamePacking) {
   Library library{lens(), halfLens()};
   FlowOptions o = quickOptions();
   o.iterations = 4;
+  o.infillEvery = 2;  // pockets filled between the waves too
   o.run.threads = 1;
   const FlowPacking one = packFlow(rectangleScene(), library, o);
   for (int threads : {2, 3}) {
@@ -187,6 +188,26 @@ TEST(FlowPack, FixedElementsAndFixedSpinesAreRespected) {
       EXPECT_EQ(e.streamline.back(), (Vec2{140, 30}));
     }
   EXPECT_EQ(onSpine, 1);
+}
+
+// Streamlines stop short of the disc in the middle of the rectangle and leave pockets there
+// and in the corners; the infill puts elements in them, between the refinement iterations.
+TEST(FlowPack, InfillPutsElementsInThePocketsTheStreamlinesLeave) {
+  Scene scene = rectangleScene();
+  Shape sun;
+  sun.subpaths.push_back({circle({200, 100}, 30), true});
+  sun.fill = Color{240, 180, 50, 1.0};
+  scene.fixed.push_back(sun);
+  Library library{lens()};
+  FlowOptions o = quickOptions();
+  o.infillEvery = 0;
+  const FlowPacking without = packFlow(scene, library, o);
+  EXPECT_EQ(without.infilled, 0);
+  o.infillEvery = 1;
+  const FlowPacking with = packFlow(scene, library, o);
+  expectValidPacking(with);
+  EXPECT_GE(with.infilled, 1);
+  EXPECT_GT(flowFill(with), flowFill(without));
 }
 
 // A fixed spine with a hairpin turn tighter than the lens is wide: bent along it, the lens

@@ -57,6 +57,14 @@ struct FlowOptions {
   double growthTolerance = 0.9;  // α: a new placement is kept if its area ≥ α × the old one
   double growthLimit = 5.0;      // g_limit (0.005 l_canvas)
   int maxRotationDegrees = 10;   // rotations ±1°…±max° tried during refinement
+  // Pockets: where streamlines stop, converge or part, Jobard–Lefer leaves room no element
+  // reaches. After every infillEvery-th refinement iteration, each piece of room at least
+  // infillWidth × s_gap wide gets a streamline traced through it and an element on it, kept
+  // if its area is at least infillMinArea × the median element's; refinement then grows it
+  // with the others. 0: none, as in the thesis (docs/flowpak.md, "Pockets").
+  int infillEvery = 5;
+  double infillWidth = 0.3;
+  double infillMinArea = 0.2;
   // A bent element whose outline or art would cross itself (a turn sharper than it is wide;
   // thesis 3.5 leaves it as future work) goes on the longer side of the spine's sharpest
   // turn, or is not placed there. true: kept folded, as in the thesis.
@@ -126,6 +134,7 @@ struct FlowPacking {
   StopReason stopReason = StopReason::IterationCap;
   // Placements tried and accepted during refinement (shift and growth phases together).
   int placementsTried = 0, placementsAccepted = 0;
+  int infilled = 0;  // elements added in pockets during refinement (FlowOptions::infillEvery)
   std::vector<double> areaPerIteration;  // total element area after placement and each iteration
   FlowPhaseTimes seconds;
 };
