@@ -59,7 +59,7 @@ nlohmann::json animateReport(const AnimateArguments& args, const AnimatedPacking
   animateOptions().report(parameters, args);
   parameters["frames"] = frameCount;
   nlohmann::json report =
-      reportWithParameters(parameters, "distances in canonical units: the container's bounding square is 1000 wide; t spans time-length");
+      reportWithParameters(parameters, "distances in canonical units: the container's bounding square is 1000 wide; t spans time-length", args.common.lengths);
   report["container"] = args.container;
   report["animation"] = args.animation;
   report["elements"] = animation.elements.size();

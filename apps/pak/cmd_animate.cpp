@@ -23,6 +23,7 @@
 #include "pak/io/packing_drawing.hpp"
 #include "pak/io/scene_loader.hpp"
 #include "pak/io/text_file.hpp"
+#include "pak/sim/canonical_units.hpp"
 
 namespace pak::cli {
 namespace {
@@ -57,7 +58,7 @@ int runAnimate(AnimateArguments& args, const CLI::App& command) {
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
   const CommonArguments& common = args.common;
-  if (!common.config.empty()) animateOptions().applyConfig(common.config, command, args);
+  if (!common.config.empty()) animateOptions().applyConfig(common.config, command, args, &args.common.lengths);
   if (!args.mirror.empty()) {
     const MirrorLine line = parseMirror(args.mirror);
     if (!line.isVertical()) throw InputError("--mirror", "pak animate mirrors across a vertical line only: x=VALUE");
@@ -70,6 +71,9 @@ int runAnimate(AnimateArguments& args, const CLI::App& command) {
   const AnimationScript script = readAnimationScript(args.animation);
   const LoadedScene input = loadScene(args.container, SceneOptions{});
   const Scene& scene = input.scene;
+  animateOptions().resolveLengths(
+      args, common.lengths,
+      lengthScale(input.layout.viewBox, input.layout.width, canonicalFrameBox(simulatedPart(scene, args.options), false)));
   std::vector<LoadedElement> elements;
   for (const AnimatedElementSpec& spec : script.elements) {
     std::vector<LoadedElement> one = loadElements({spec.svg});
@@ -220,7 +224,8 @@ void declareAnimateOptions(CLI::App& command, AnimateArguments& args) {
                     {CommonOption::Report, "write a JSON report: parameters, sizes, iterations, times, fill, overlaps per frame"},
                     {CommonOption::Every, "with --checkpoint: iterations between saves"}, {CommonOption::Quiet}});
   command.add_option("--frames", args.frames, "frames to render (0: the animation file's, default 500)")->capture_default_str();
-  animateOptions().addTo(command, args);
+  animateOptions().addTo(command, args, &args.common.lengths);
+  command.footer(kLengthHelp);
   command.add_option("--width", args.width, "width in pixels of the GIF, PNG frames, video and contact-sheet cells")->capture_default_str();
   command.add_option("--png-at", args.pngAt, "with --png: the time t ∈ [0, 1] of the preview (any t, not only a frame's)")->capture_default_str();
   command.add_flag("--png-frames", args.pngFrames, "also write OUT/frames/frame-NNNN.png");

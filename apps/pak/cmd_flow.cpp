@@ -17,6 +17,7 @@
 #include "pak/io/flow_drawing.hpp"
 #include "pak/io/scene_loader.hpp"
 #include "pak/io/svg_writer.hpp"
+#include "pak/sim/canonical_units.hpp"
 
 namespace pak::cli {
 namespace {
@@ -26,11 +27,13 @@ int runFlow(FlowArguments& args, const CLI::App& command) {
   using Clock = std::chrono::steady_clock;
   auto start = Clock::now();
   const CommonArguments& common = args.common;
-  if (!common.config.empty()) flowOptions().applyConfig(common.config, command, args);
+  if (!common.config.empty()) flowOptions().applyConfig(common.config, command, args, &args.common.lengths);
   if (!args.mirror.empty()) args.options.mirror = parseMirror(args.mirror);
 
   const LoadedScene input = loadScene(args.scene, SceneOptions{});
   const Scene& scene = input.scene;
+  flowOptions().resolveLengths(args, common.lengths,
+                               lengthScale(input.layout.viewBox, input.layout.width, canonicalFrameBox(scene, true)));
   const std::vector<LoadedElement> elements = loadElements(args.elements);
   const Library library = libraryOf(elements);
   if (!common.quiet) printInputWarnings(input.warnings, {&elements});
@@ -101,7 +104,8 @@ void declareFlowOptions(CLI::App& command, FlowArguments& args) {
        {CommonOption::Every, "with --snapshots: every N-th refinement iteration (and the last)"},
        {CommonOption::DebugLayers, "add layers showing the vector field, streamlines, element spines and blobs"},
        {CommonOption::Quiet}});
-  flowOptions().addTo(command, args);
+  flowOptions().addTo(command, args, &args.common.lengths);
+  command.footer(kLengthHelp);
 }
 
 const CommandRegistrar registrar{subcommand<FlowArguments>(

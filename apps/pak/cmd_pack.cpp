@@ -23,6 +23,7 @@
 #include "pak/io/tile_drawing.hpp"
 #include "pak/repulsion/repulsion_presets.hpp"
 #include "pak/repulsion/tiling.hpp"
+#include "pak/sim/canonical_units.hpp"
 
 namespace pak::cli {
 namespace {
@@ -49,7 +50,7 @@ std::string formatSeconds(double s) {
 void resolveOptions(PackArguments& args, const CLI::App& command) {
   const OptionTable<PackArguments>& table = packOptions();
   std::set<std::string> configured;
-  if (!args.common.config.empty()) configured = table.applyConfig(args.common.config, command, args);
+  if (!args.common.config.empty()) configured = table.applyConfig(args.common.config, command, args, &args.common.lengths);
   if (args.rigid && !args.preset.empty() && args.preset != "rigid")
     throw InputError("--rigid", "conflicts with --preset " + args.preset);
   if (args.rigid) args.preset = "rigid";
@@ -83,6 +84,8 @@ int runPack(PackArguments& args, const CLI::App& command) {
   const Vec2 tile = args.options.tiling.size;
   const LoadedScene input = tiled ? LoadedScene{tileScene(tile), tileLayout(tile), {}} : loadScene(args.container, sceneOptions);
   const Scene& scene = input.scene;
+  packOptions().resolveLengths(args, common.lengths,
+                               lengthScale(input.layout.viewBox, input.layout.width, canonicalFrameBox(scene, false)));
   const std::vector<LoadedElement> elements = loadElements(args.elements);
   const std::vector<LoadedElement> secondaryElements = args.secondary.empty() ? std::vector<LoadedElement>{} : loadElements(args.secondary);
   Library library = libraryOf(elements);
@@ -160,7 +163,8 @@ void declarePackOptions(CLI::App& command, PackArguments& args) {
                     {CommonOption::Report, "write a JSON report: parameters, iterations, times, fill ratios, overlaps"},
                     {CommonOption::Snapshots}, {CommonOption::Every},
                     {CommonOption::DebugLayers, "add the skins and meshes as extra layers"}, {CommonOption::Quiet}});
-  packOptions().addTo(command, args);
+  packOptions().addTo(command, args, &args.common.lengths);
+  command.footer(kLengthHelp);
   command.add_option("--progress-every", args.progressEvery,
                      "progress line interval in iterations (0: 50 on a terminal, 1000 otherwise)");
 }

@@ -6,6 +6,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "length_units.hpp"
+
 namespace pak::cli {
 
 enum class CommonOption { Output, Png, PngWidth, Config, Report, Snapshots, Every, DebugLayers, Quiet };
@@ -21,6 +23,7 @@ struct CommonArguments {
   int every = 1;            // iterations between snapshots (animate: checkpoints)
   bool debugLayers = false;
   bool quiet = false;
+  GivenLengths lengths{};   // length options given with a unit (OptionTable::resolveLengths)
 };
 
 struct CommonOptionUse {

@@ -34,6 +34,33 @@ void assignConfigValue(double& target, const nlohmann::json& value, const std::s
   target = value.get<double>();
 }
 
+void assignConfigLength(double& target, GivenLengths* given, const std::string& name, const nlohmann::json& value,
+                        const std::string& key, const std::string& file) {
+  if (value.is_number()) {
+    target = value.get<double>();
+    if (given) given->erase(name);
+    return;
+  }
+  if (!value.is_string()) throw InputError(file, "\"" + key + "\" must be a length: a number, or a string such as \"2mm\"");
+  std::string problem;
+  const std::optional<ParsedLength> length = parseLength(value.get<std::string>(), problem);
+  if (!length) throw InputError(file, "\"" + key + "\": " + problem);
+  target = length->number;
+  if (!given) return;
+  if (length->unit.empty()) given->erase(name);
+  else (*given)[name] = value.get<std::string>();
+}
+
+void setLength(double& target, GivenLengths* given, const std::string& name, const std::string& text) {
+  std::string problem;
+  const std::optional<ParsedLength> length = parseLength(text, problem);
+  if (!length) throw CLI::ValidationError("--" + name, problem);
+  target = length->number;
+  if (!given) return;
+  if (length->unit.empty()) given->erase(name);
+  else (*given)[name] = text;
+}
+
 void assignConfigValue(int& target, const nlohmann::json& value, const std::string& key, const std::string& file) {
   if (!value.is_number_integer()) throw InputError(file, "\"" + key + "\" must be an integer");
   constexpr std::int64_t low = std::numeric_limits<int>::min(), high = std::numeric_limits<int>::max();

@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <optional>
+#include <sstream>
 #include <set>
 #include <string>
 #include <type_traits>
@@ -15,6 +17,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "length_units.hpp"
 #include "pak/error.hpp"
 
 namespace pak::cli {
@@ -51,10 +54,37 @@ Field<Root, Value> nested(const Field<Root, Middle>& outer, const Field<Middle, 
           [=](const Root& root) -> const Value& { return inner.read(outer.read(root)); }};
 }
 
+// A length option (a double in canonical units): given as a bare number, or with a unit
+// (length_units.hpp) that OptionTable::resolveLengths turns into canonical units.
+template <class Root>
+struct LengthField {
+  Field<Root, double> value;
+};
+
+template <class Root, class Member, class... Rest>
+LengthField<Root> length(Member Root::*first, Rest... rest) {
+  return {field(first, rest...)};
+}
+
+template <class Root, class Middle>
+LengthField<Root> nested(const Field<Root, Middle>& outer, const LengthField<Middle>& inner) {
+  return {nested(outer, inner.value)};
+}
+
+// The member a binding sets, whatever kind of option it is.
+template <class Root, class Value>
+const Field<Root, Value>& valueField(const Field<Root, Value>& f) {
+  return f;
+}
+template <class Root>
+const Field<Root, double>& valueField(const LengthField<Root>& f) {
+  return f.value;
+}
+
 template <class Root>
 struct Option {
   using Binding = std::variant<Field<Root, double>, Field<Root, int>, Field<Root, bool>, Field<Root, std::string>,
-                               Field<Root, std::uint64_t>>;
+                               Field<Root, std::uint64_t>, LengthField<Root>>;
   std::string name;  // without "--"
   Binding field;
   std::string help;
@@ -75,6 +105,11 @@ void assignConfigValue(std::string& target, const nlohmann::json& value, const s
                        const std::string& file);
 void assignConfigValue(std::uint64_t& target, const nlohmann::json& value, const std::string& key,
                        const std::string& file);
+// A length: a number, or a string with a unit, recorded in `given` under `name`.
+void assignConfigLength(double& target, GivenLengths* given, const std::string& name, const nlohmann::json& value,
+                        const std::string& key, const std::string& file);
+// Parses a length option's value into `target`, recording a unit in `given` (CLI11 callback).
+void setLength(double& target, GivenLengths* given, const std::string& name, const std::string& text);
 
 template <class Root>
 class OptionTable {
@@ -90,10 +125,28 @@ class OptionTable {
     return OptionTable(std::move(all));
   }
 
-  // Every option as a CLI11 option (a flag for bool) bound to its member of `root`.
-  void addTo(CLI::App& command, Root& root) const {
+  // Every option as a CLI11 option (a flag for bool) bound to its member of `root`; length
+  // options given with a unit are recorded in `given` (see resolveLengths).
+  void addTo(CLI::App& command, Root& root, GivenLengths* lengths = nullptr) const {
     for (const Option<Root>& o : options_)
-      std::visit([&](const auto& f) { addOption(command, o, f.get(root)); }, o.field);
+      std::visit(
+          [&](const auto& f) {
+            if constexpr (std::is_same_v<std::decay_t<decltype(f)>, LengthField<Root>>)
+              addLengthOption(command, o, f.value.get(root), lengths);
+            else
+              addOption(command, o, f.get(root));
+          },
+          o.field);
+  }
+
+  // Turns the lengths given with a unit into canonical units, once the scene is known.
+  void resolveLengths(Root& root, const GivenLengths& lengths, const LengthScale& scale) const {
+    for (const Option<Root>& o : options_)
+      if (const auto* f = std::get_if<LengthField<Root>>(&o.field); f && lengths.count(o.name)) {
+        std::string problem;
+        if (const std::optional<ParsedLength> length = parseLength(lengths.at(o.name), problem))
+          f->value.get(root) = toCanonical(*length, scale);
+      }
   }
 
   // Whether the command line gave the option, under its name or an alias.
@@ -107,7 +160,8 @@ class OptionTable {
   // Reads the --config `file` into `root`, except the options the command line gave (it wins).
   // Returns the names of the options the file set. Unknown keys, a key given twice (as a name
   // and an alias) and values of the wrong type are InputErrors naming the file.
-  std::set<std::string> applyConfig(const std::string& file, const CLI::App& command, Root& root) const {
+  std::set<std::string> applyConfig(const std::string& file, const CLI::App& command, Root& root,
+                                    GivenLengths* lengths = nullptr) const {
     std::map<std::string, std::string> keyOf;  // option name → the key that set it
     const nlohmann::json json = readConfigObject(file);
     for (const auto& [key, value] : json.items()) {
@@ -116,7 +170,14 @@ class OptionTable {
       if (given(command, *o)) continue;
       if (const auto [at, fresh] = keyOf.emplace(o->name, key); !fresh)
         throw InputError(file, "\"" + at->second + "\" and \"" + key + "\" are the same option");
-      std::visit([&](const auto& f) { assignConfigValue(f.get(root), value, key, file); }, o->field);
+      std::visit(
+          [&](const auto& f) {
+            if constexpr (std::is_same_v<std::decay_t<decltype(f)>, LengthField<Root>>)
+              assignConfigLength(f.value.get(root), lengths, o->name, value, key, file);
+            else
+              assignConfigValue(f.get(root), value, key, file);
+          },
+          o->field);
     }
     std::set<std::string> set;
     for (const auto& entry : keyOf) set.insert(entry.first);
@@ -126,14 +187,14 @@ class OptionTable {
   // The report's "parameters": every option's name and value.
   void report(nlohmann::json& parameters, const Root& root) const {
     for (const Option<Root>& o : options_)
-      std::visit([&](const auto& f) { parameters[o.name] = f.read(root); }, o.field);
+      std::visit([&](const auto& f) { parameters[o.name] = valueField(f).read(root); }, o.field);
   }
 
   // Copies each option's value from `from` into `to`, except where keep(option) holds.
   template <class Keep>
   void copyUnless(Root& to, const Root& from, const Keep& keep) const {
     for (const Option<Root>& o : options_)
-      if (!keep(o)) std::visit([&](const auto& f) { f.get(to) = f.read(from); }, o.field);
+      if (!keep(o)) std::visit([&](const auto& f) { valueField(f).get(to) = valueField(f).read(from); }, o.field);
   }
 
  private:
@@ -156,6 +217,21 @@ class OptionTable {
                                         : std::string();
           },
           ""));
+  }
+
+  static void addLengthOption(CLI::App& command, const Option<Root>& o, double& target, GivenLengths* lengths) {
+    std::ostringstream shown;
+    shown << target;
+    auto add = [&](const std::string& name, const std::string& help) {
+      return command
+          .add_option_function<std::string>(
+              "--" + name, [&target, lengths, key = o.name](const std::string& text) { setLength(target, lengths, key, text); },
+              help)
+          ->type_name("LENGTH")
+          ->default_str(shown.str());
+    };
+    CLI::Option* primary = add(o.name, o.help);
+    for (const std::string& alias : o.aliases) add(alias, "old name of --" + o.name)->group("")->excludes(primary);
   }
 
   const Option<Root>* find(const std::string& key) const {

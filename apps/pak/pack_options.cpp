@@ -13,8 +13,8 @@ OptionTable<RepulsionOptions> repulsionOptionTable() {
   using S = RepulsionStopRule;
   using P = SecondaryPassOptions;
   const OptionTable<O> elements{
-      {"gap", field(&O::gap), "d_gap, the spacing between elements (canonical units: the container's bounding square is 1000 wide)"},
-      {"mesh-spacing", field(&O::meshSpacing), "distance between mesh samples, canonical units (0: max(gap, element size / 10))"},
+      {"gap", length(&O::gap), "d_gap, the spacing between elements (canonical units: the container's bounding square is 1000 wide)"},
+      {"mesh-spacing", length(&O::meshSpacing), "distance between mesh samples, canonical units (0: max(gap, element size / 10))"},
       {"count", field(&O::count), "number of elements to seed (0: container area / element area)"},
       {"element-area", field(&O::elementArea), "nominal area of one element as a fraction of the container; sets the count when --count is 0"},
       {"initial-coverage", field(&O::initialCoverage), "fraction of the container the shrunken seeds cover at the start"},
@@ -31,8 +31,8 @@ OptionTable<RepulsionOptions> repulsionOptionTable() {
       {"k-unfold", field(&O::simulation, &SimulationParameters::unfoldStrength), "in the clean-up, an element whose art crosses itself (a limb folded over its body) is pulled toward its best-fit rest shape with this strength until it does not (0: none, as in the thesis)"},
       {"time-limit", field(&O::stop, &S::timeLimit), "stop growing after this many seconds, clean up and write the packing as it is then, with stop-reason time-limit in the report (0: no limit; a run stopped by it depends on the machine's speed). Ctrl-C does the same (interrupted); a second Ctrl-C aborts, leaving no half-written file"},
       {"secondary-scale", field(&O::secondary, &P::scale), "nominal size of a secondary element relative to a primary one (linear)"},
-      {"secondary-min-distance", field(&O::secondary, &P::minDistance), "d_min: secondaries go only where the negative space is at least this far from any element or wall (canonical units; 0: max(gap, L / 4), L the nominal secondary size)"},
-      {"secondary-separation", field(&O::secondary, &P::separation), "d_sep: secondary seeds keep at least this far apart (canonical units; 0: L, the nominal secondary size)"},
+      {"secondary-min-distance", length(&O::secondary, &P::minDistance), "d_min: secondaries go only where the negative space is at least this far from any element or wall (canonical units; 0: max(gap, L / 4), L the nominal secondary size)"},
+      {"secondary-separation", length(&O::secondary, &P::separation), "d_sep: secondary seeds keep at least this far apart (canonical units; 0: L, the nominal secondary size)"},
       {"secondary-resolution", field(&O::secondary, &P::resolution), "distance transform cells across the container for seeding secondaries"},
       {"secondary-target-fill", field(&O::secondary, &P::targetFill), "the secondary pass stops when skins (and fixed elements) cover this fraction of the container"},
       {"secondary-press", field(&O::secondary, &P::pressIterations), "after the secondary pass stops, the primaries (frozen through it) are freed and all elements are pressed into the pockets left for this many iterations before the clean-up (0: none, as in the thesis)"},

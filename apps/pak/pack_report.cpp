@@ -100,7 +100,7 @@ nlohmann::json packReport(const PackArguments& args, const Scene& scene, const P
     secondaryCount += e.secondary ? 1 : 0;
   }
   nlohmann::json report =
-      reportWithParameters(parameters, "distances in canonical units: the container's bounding square is 1000 wide");
+      reportWithParameters(parameters, "distances in canonical units: the container's bounding square is 1000 wide", args.common.lengths);
   report["container"] = args.container;
   if (isTiled(packing.tile)) report["tile"] = {packing.tile.x, packing.tile.y};
   report["elements-library"] = args.elements;

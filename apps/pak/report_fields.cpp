@@ -2,8 +2,9 @@
 
 namespace pak::cli {
 
-nlohmann::json reportWithParameters(const nlohmann::json& parameters, const char* units) {
-  return {{"parameters", parameters}, {"units", units}};
+nlohmann::json reportWithParameters(const nlohmann::json& parameters, const char* units, const GivenLengths& given) {
+  // A length given with a unit: "parameters" has it in canonical units, this as written.
+  return {{"parameters", parameters}, {"units", units}, {"lengths-given", given}};
 }
 
 void reportCheck(nlohmann::json& report, const PackingCheck& check) {

@@ -7,10 +7,13 @@
 #include "pak/geom/verify.hpp"
 #include "pak/metrics/evenness.hpp"
 
+#include "length_units.hpp"
+
 namespace pak::cli {
 
-// A report's start: the run's parameters, and the units its distances are in.
-nlohmann::json reportWithParameters(const nlohmann::json& parameters, const char* units);
+// A report's start: the run's parameters, the units its distances are in, and the lengths
+// given with a unit as written.
+nlohmann::json reportWithParameters(const nlohmann::json& parameters, const char* units, const GivenLengths& given);
 
 // overlap-count, overlap-area, elements-outside, outside-area, self-intersecting-outlines,
 // problems.

@@ -17,10 +17,10 @@ const OptionTable<SimulationParameters>& simulationOptions() {
       {"velocity-cap", field(&P::velocityCap), "largest vertex speed (canonical units per unit time)"},
       {"damping", field(&P::damping), "fraction of each vertex's velocity lost per step (0: none)"},
       {"growth-rate", field(&P::growthRate), "k_g: growth factor increase per unit time while an element has room"},
-      {"cell-size", field(&P::cellSize), "neighbour grid cell and repulsion reach, canonical units (pack: 0 = 2 × mesh spacing; animate: the exact reach, thesis 0.04 of the container)"},
+      {"cell-size", length(&P::cellSize), "neighbour grid cell and repulsion reach, canonical units (pack: 0 = 2 × mesh spacing; animate: the exact reach, thesis 0.04 of the container)"},
       {"pocket-pressure", field(&P::pocketPressure), "strength pushing the skin of an element (animate: a slice) that has stopped growing outward where it borders a pocket (no other skin or wall within --pocket-clearance), so it bulges into it (0: none, as in the thesis)"},
-      {"pocket-clearance", field(&P::pocketClearance), "with --pocket-pressure: skin-to-skin distance (canonical units) beyond which a skin vertex borders a pocket"},
-      {"outside-tolerance", field(&P::outsideTolerance), "an element pushed further than this outside the container stops growing (canonical units; 1e9: never, as in the thesis)"},
+      {"pocket-clearance", length(&P::pocketClearance), "with --pocket-pressure: skin-to-skin distance (canonical units) beyond which a skin vertex borders a pocket"},
+      {"outside-tolerance", length(&P::outsideTolerance), "an element pushed further than this outside the container stops growing (canonical units; 1e9: never, as in the thesis)"},
   };
   return table;
 }

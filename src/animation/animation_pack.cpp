@@ -23,23 +23,24 @@ const char* toString(AnimationStop reason) {
   return "?";
 }
 
+Scene simulatedPart(const Scene& scene, const AnimationOptions& options) {
+  if (!options.mirrorX) return scene;
+  if (!std::isfinite(*options.mirrorX)) throw InputError("--mirror", "needs a finite x");
+  const Box box = bounds(scene.container);
+  const Vec2 low = box.min - Vec2{1.0, 1.0}, high{*options.mirrorX, box.max.y + 1.0};
+  Scene half = scene;
+  half.container = intersect(scene.container, Region{Polygon{Ring{low, {high.x, low.y}, high, {low.x, high.y}}, {}}});
+  if (area(half.container) <= 0.0)
+    throw InputError("--mirror", "the container has no part left of the line x = " + messageNumber(*options.mirrorX));
+  return half;
+}
+
 AnimatedPacking packAnimation(const Scene& scene, const Library& library, const AnimationScript& script,
                               const AnimationOptions& options, const AnimationCallbacks& callbacks,
                               const AnimationState* resumeFrom) try {
   using Clock = std::chrono::steady_clock;
   const auto started = Clock::now();
-  // With a mirror, the packing is simulated on the container's part left of the line.
-  Scene half;
-  if (options.mirrorX) {
-    if (!std::isfinite(*options.mirrorX)) throw InputError("--mirror", "needs a finite x");
-    const Box box = bounds(scene.container);
-    const Vec2 low = box.min - Vec2{1.0, 1.0}, high{*options.mirrorX, box.max.y + 1.0};
-    half = scene;
-    half.container = intersect(scene.container, Region{Polygon{Ring{low, {high.x, low.y}, high, {low.x, high.y}}, {}}});
-    if (area(half.container) <= 0.0)
-      throw InputError("--mirror", "the container has no part left of the line x = " + messageNumber(*options.mirrorX));
-  }
-  const AnimationRun run = prepareAnimation(options.mirrorX ? half : scene, library, script, options);
+  const AnimationRun run = prepareAnimation(simulatedPart(scene, options), library, script, options);
   const AnimationSeeding seeding = seedAnimation(run);
   ThreadPool pool(options.run.threads);
   SpacetimeSimulation sim = spacetimeSimulation(run, seeding, pool, resumeFrom);

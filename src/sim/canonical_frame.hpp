@@ -6,10 +6,9 @@
 
 #include "pak/geom/box.hpp"
 #include "pak/geom/vec2.hpp"
+#include "pak/sim/canonical_units.hpp"
 
 namespace pak {
-
-constexpr double kCanonicalSide = 1000.0;
 
 // canonical = (input - origin) * scale.
 struct CanonicalFrame {

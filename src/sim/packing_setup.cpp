@@ -7,12 +7,17 @@
 
 namespace pak {
 
+Box canonicalFrameBox(const Scene& scene, bool spansFixed) {
+  Box box = bounds(scene.container);
+  if (spansFixed && !box.empty())
+    for (const Shape& s : scene.fixed) box.add(bounds(s));
+  return box;
+}
+
 PackingSetup preparePacking(const Scene& scene, const Library& library, const PackingSetupOptions& options) {
   PackingSetup setup;
-  Box box = bounds(scene.container);
-  if (box.empty() || !(area(scene.container) > 0.0)) throw InputError(scene.source, "container has no area");
-  if (options.frameSpansFixed)
-    for (const Shape& s : scene.fixed) box.add(bounds(s));
+  if (bounds(scene.container).empty() || !(area(scene.container) > 0.0)) throw InputError(scene.source, "container has no area");
+  const Box box = canonicalFrameBox(scene, options.frameSpansFixed);
   setup.frameBox = box;
   setup.side = std::max(box.width(), box.height());
   setup.frame = CanonicalFrame::of(box);

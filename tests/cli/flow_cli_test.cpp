@@ -2,6 +2,7 @@
 // figures, snapshots, debug layers, determinism and one-line errors.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
@@ -160,6 +161,10 @@ TEST(CliFlow, BadInputIsOneErrorLineAndExitTwo) {
         "flow examples/flow/koi.svg -e examples/flow/elements -o " + out + " --config " + shellQuoted(badConfig),
         "flow examples/flow/koi.svg -e examples/flow/elements -o " + out + " --snapshots " +
             shellQuoted(dir.file("s")) + " --every 0",
+        "flow examples/flow/koi.svg -e examples/flow/elements -o " + out + " --gap 2furlong",
+        "flow examples/flow/koi.svg -e examples/flow/elements -o " + out + " --spacing mm",
+        "flow examples/flow/koi.svg -e examples/flow/elements -o " + out + " --config " +
+            shellQuoted(dir.write("units.json", R"({"gap": "3 parsecs"})")),
         "flow examples/flow/koi.svg -e no-such-folder -o " + out}) {
     PakRun run = runPak(args);
     EXPECT_EQ(run.exitCode, 2) << args << "\n" << run.err;
@@ -167,6 +172,41 @@ TEST(CliFlow, BadInputIsOneErrorLineAndExitTwo) {
     EXPECT_EQ(run.errLines()[0].rfind("pak: error: ", 0), 0u) << run.err;
     EXPECT_FALSE(std::filesystem::exists(dir.file("o.svg"))) << args;
   }
+}
+
+// Lengths with units (issue 17, item 5): 3 % of l_canvas is 30 canonical units, and a
+// document 200 mm wide over an 800-unit viewBox has 4 units to the millimetre; the koi's
+// l_canvas is 680 units. A length with a unit gives the run its canonical equivalent gives.
+TEST(CliFlow, LengthsTakeUnitsAndGiveTheRunTheirCanonicalValueGives) {
+  ScratchFolder dir("cli-flow-units");
+  std::string koi = readWholeFile("examples/flow/koi.svg");
+  const std::string size = R"(width="800" height="480")";
+  ASSERT_NE(koi.find(size), std::string::npos);
+  koi.replace(koi.find(size), size.size(), R"(width="200mm" height="120mm")");
+  const std::string koiMm = dir.write("koi-mm.svg", koi);
+  const std::string common = " -e examples/flow/elements" + kQuick + " --count 30";
+  auto run = [&](const std::string& scene, const std::string& lengths, const std::string& name) {
+    PakRun r = runPak("flow " + shellQuoted(scene) + common + lengths + " -o " + shellQuoted(dir.file(name + ".svg")) +
+                      " --report " + shellQuoted(dir.file(name + ".json")));
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    return nlohmann::json::parse(readWholeFile(dir.file(name + ".json")));
+  };
+  const auto units = run(koiMm, " --gap 3% --spacing 0.5mm", "units");
+  EXPECT_EQ(units["lengths-given"], (nlohmann::json{{"gap", "3%"}, {"spacing", "0.5mm"}}));
+  EXPECT_DOUBLE_EQ(units["parameters"]["gap"].get<double>(), 30.0);
+  const double spacing = units["parameters"]["spacing"].get<double>();
+  EXPECT_NEAR(spacing, 0.5 * 4.0 * 1000.0 / 680.0, 1e-9);
+  char exact[32];  // the same double back
+  std::snprintf(exact, sizeof exact, "%.17g", spacing);
+  const auto plain = run("examples/flow/koi.svg", " --gap 30 --spacing " + std::string(exact), "plain");
+  EXPECT_EQ(plain["lengths-given"], nlohmann::json::object());
+  EXPECT_EQ(units["element-count"], plain["element-count"]);
+  EXPECT_DOUBLE_EQ(units["fill-ratio-art"].get<double>(), plain["fill-ratio-art"].get<double>());
+  // The same from a --config file.
+  const std::string config = dir.write("c.json", R"({"gap": "3%", "spacing": "0.5mm"})");
+  const auto configured = run(koiMm, " --config " + shellQuoted(config), "configured");
+  EXPECT_EQ(configured["lengths-given"], units["lengths-given"]);
+  EXPECT_EQ(readWholeFile(dir.file("configured.svg")), readWholeFile(dir.file("units.svg")));
 }
 
 }  // namespace

@@ -68,6 +68,22 @@ TEST(CliPack, ReportHasTheEvennessPakMetricsMeasuresOnTheOutput) {
   EXPECT_LT(report["primary-area-cv"].get<double>(), 1.0);
 }
 
+// A length with a unit (issue 17, item 5): 2 % of the container's bounding square is 20
+// canonical units; the report gives both.
+TEST(CliPack, LengthsTakeUnits) {
+  ScratchFolder dir("cli-pack-units");
+  PakRun run = runPak("pack -c examples/scene.svg -e examples/elements --count 6 --gap 2% --max-iterations 10 --quiet -o " +
+                      shellQuoted(dir.file("out.svg")) + " --report " + shellQuoted(dir.file("r.json")));
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  auto report = nlohmann::json::parse(readWholeFile(dir.file("r.json")));
+  EXPECT_DOUBLE_EQ(report["parameters"]["gap"].get<double>(), 20.0);
+  EXPECT_EQ(report["lengths-given"], (nlohmann::json{{"gap", "2%"}}));
+  PakRun bad = runPak("pack -c examples/scene.svg -e examples/elements --cell-size 3parsec -o " + shellQuoted(dir.file("b.svg")));
+  EXPECT_EQ(bad.exitCode, 2);
+  ASSERT_EQ(bad.errLines().size(), 1u) << bad.err;
+  EXPECT_EQ(bad.errLines()[0].rfind("pak: error: --cell-size: ", 0), 0u) << bad.err;
+}
+
 TEST(CliPack, PetalsDrawnOverlappingAreNotCountedAsFolds) {
   // examples/elements/flower.svg draws its petals as one ring that crosses itself; after one
   // step nothing has deformed, so nothing is folded.

@@ -99,6 +99,10 @@ struct AnimatedPacking {
   std::vector<double> separationTimes;  // ascending t of the frame separation's samples
 };
 
+// What the animation simulates: the scene, or with a mirror its container's part left of the
+// line (InputError when there is none).
+Scene simulatedPart(const Scene& scene, const AnimationOptions& options);
+
 AnimatedPacking packAnimation(const Scene& scene, const Library& library, const AnimationScript& script,
                               const AnimationOptions& options = {}, const AnimationCallbacks& callbacks = {},
                               const AnimationState* resumeFrom = nullptr);
