@@ -40,7 +40,8 @@ AnimatedPacking packAnimation(const Scene& scene, const Library& library, const 
                               const AnimationState* resumeFrom) try {
   using Clock = std::chrono::steady_clock;
   const auto started = Clock::now();
-  const AnimationRun run = prepareAnimation(simulatedPart(scene, options), library, script, options);
+  const Scene simulated = simulatedPart(scene, options);  // the run keeps a reference to it
+  const AnimationRun run = prepareAnimation(simulated, library, script, options);
   const AnimationSeeding seeding = seedAnimation(run);
   ThreadPool pool(options.run.threads);
   SpacetimeSimulation sim = spacetimeSimulation(run, seeding, pool, resumeFrom);

@@ -144,7 +144,7 @@ TEST(CliErrors, OptionErrorsNameTheOption) {
       {kPack + o + "--orientation sideways", "--orientation: 'sideways' is not one of"},
       {kFlow + o + "--stop-ratio 2", "--stop-ratio: must be in (0, 1]"},
       {kPack + o + "--count abc", "--count: cannot read 'abc' as an integer"},
-      {kPack + o + "--gap wide", "--gap: cannot read 'wide' as a number"},
+      {kPack + o + "--gap wide", "--gap: 'wide' is not a length (a number, or a number with mm, cm, in, pt, px or %)"},
       {kPack + o + "--seed -1", "--seed: must be a non-negative integer"},
       {kPack + o + "--seed 99999999999999999999999", "--seed: must be at most"},
       {kPack + o + "--no-such-option 3", "--no-such-option: not an option of this command"},

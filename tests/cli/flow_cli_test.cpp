@@ -179,7 +179,7 @@ TEST(CliFlow, BadInputIsOneErrorLineAndExitTwo) {
 // l_canvas is 680 units. A length with a unit gives the run its canonical equivalent gives.
 TEST(CliFlow, LengthsTakeUnitsAndGiveTheRunTheirCanonicalValueGives) {
   ScratchFolder dir("cli-flow-units");
-  std::string koi = readWholeFile("examples/flow/koi.svg");
+  std::string koi = readWholeFile(std::filesystem::path(PAK_SOURCE_DIR) / "examples/flow/koi.svg");
   const std::string size = R"(width="800" height="480")";
   ASSERT_NE(koi.find(size), std::string::npos);
   koi.replace(koi.find(size), size.size(), R"(width="200mm" height="120mm")");

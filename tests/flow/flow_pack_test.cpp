@@ -170,12 +170,18 @@ TEST(FlowPack, AnyThreadCountGivesTheSamePacking) {
   }
 }
 
-TEST(FlowPack, FixedElementsAndFixedSpinesAreRespected) {
+// The rectangle with a fixed disc, the sun, in its middle.
+Scene rectangleWithSun() {
   Scene scene = rectangleScene();
   Shape sun;
   sun.subpaths.push_back({circle({200, 100}, 30), true});
   sun.fill = Color{240, 180, 50, 1.0};
   scene.fixed.push_back(sun);
+  return scene;
+}
+
+TEST(FlowPack, FixedElementsAndFixedSpinesAreRespected) {
+  Scene scene = rectangleWithSun();
   scene.spines.push_back({{40, 30}, {140, 30}});
   FlowPacking p = packFlow(scene, Library{lens()}, quickOptions());
   expectValidPacking(p);  // fixedArt counts as one more element: nothing overlaps it
@@ -193,11 +199,7 @@ TEST(FlowPack, FixedElementsAndFixedSpinesAreRespected) {
 // Streamlines stop short of the disc in the middle of the rectangle and leave pockets there
 // and in the corners; the infill puts elements in them, between the refinement iterations.
 TEST(FlowPack, InfillPutsElementsInThePocketsTheStreamlinesLeave) {
-  Scene scene = rectangleScene();
-  Shape sun;
-  sun.subpaths.push_back({circle({200, 100}, 30), true});
-  sun.fill = Color{240, 180, 50, 1.0};
-  scene.fixed.push_back(sun);
+  const Scene scene = rectangleWithSun();
   Library library{lens()};
   FlowOptions o = quickOptions();
   o.infillEvery = 0;
