@@ -208,15 +208,7 @@ class OptionTable {
     };
     CLI::Option* primary = add(o.name, o.help);
     if constexpr (std::is_same_v<Value, std::uint64_t>) primary->check(CLI::Validator(nonNegativeInteger, ""));
-    // Hidden, and checked here rather than with CLI11's excludes(), which would print the
-    // alias's (hidden) name in the primary's help.
-    for (const std::string& alias : o.aliases)
-      add(alias, "old name of --" + o.name)->group("")->check(CLI::Validator(
-          [primary, alias](const std::string&) {
-            return primary->count() > 0 ? "--" + alias + ": the same option as " + primary->get_name() + ", given too"
-                                        : std::string();
-          },
-          ""));
+    addAliases(o, primary, add);
   }
 
   static void addLengthOption(CLI::App& command, const Option<Root>& o, double& target, GivenLengths* lengths) {
@@ -230,8 +222,20 @@ class OptionTable {
           ->type_name("LENGTH")
           ->default_str(shown.str());
     };
-    CLI::Option* primary = add(o.name, o.help);
-    for (const std::string& alias : o.aliases) add(alias, "old name of --" + o.name)->group("")->excludes(primary);
+    addAliases(o, add(o.name, o.help), add);
+  }
+
+  // Hidden, and checked here rather than with CLI11's excludes(), which would print the
+  // alias's (hidden) name in the primary's help.
+  template <class Add>
+  static void addAliases(const Option<Root>& o, CLI::Option* primary, const Add& add) {
+    for (const std::string& alias : o.aliases)
+      add(alias, "old name of --" + o.name)->group("")->check(CLI::Validator(
+          [primary, alias](const std::string&) {
+            return primary->count() > 0 ? "--" + alias + ": the same option as " + primary->get_name() + ", given too"
+                                        : std::string();
+          },
+          ""));
   }
 
   const Option<Root>* find(const std::string& key) const {
