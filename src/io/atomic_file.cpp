@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <iterator>
 #include <string>
 #include <system_error>
 
@@ -70,9 +71,13 @@ constexpr int kSlots = 64;
 TemporarySlot slots[kSlots];
 static_assert(std::atomic<int>::is_always_lock_free);
 
-void listTemporary(const std::string& path) {
+// The folders the run created, in the same kind of slots (never unlisted).
+TemporarySlot folderSlots[8];
+
+void listIn(TemporarySlot* begin, TemporarySlot* end, const std::string& path) {
   if (path.size() >= sizeof(TemporarySlot::path)) return;
-  for (TemporarySlot& slot : slots) {
+  for (TemporarySlot* at = begin; at != end; ++at) {
+    TemporarySlot& slot = *at;
     int expected = TemporarySlot::kFree;
     if (!slot.state.compare_exchange_strong(expected, TemporarySlot::kFilling)) continue;
     std::memcpy(slot.path, path.c_str(), path.size() + 1);
@@ -80,6 +85,8 @@ void listTemporary(const std::string& path) {
     return;
   }
 }
+
+void listTemporary(const std::string& path) { listIn(std::begin(slots), std::end(slots), path); }
 
 void unlistTemporary(const std::string& path) {
   for (TemporarySlot& slot : slots)
@@ -146,9 +153,14 @@ void writeFileAtomically(const std::string& path, const std::string& contents) {
   commitTemporary(temporary, path);
 }
 
+void listCreatedFolder(const std::string& folder) { listIn(std::begin(folderSlots), std::end(folderSlots), folder); }
+
 void removeTemporaries() noexcept {
   for (TemporarySlot& slot : slots)
     if (slot.state.load(std::memory_order_acquire) == TemporarySlot::kListed) ::unlink(slot.path);
+  // rmdir removes only an empty folder: one holding finished outputs stays.
+  for (TemporarySlot& slot : folderSlots)
+    if (slot.state.load(std::memory_order_acquire) == TemporarySlot::kListed) ::rmdir(slot.path);
 }
 
 }  // namespace pak

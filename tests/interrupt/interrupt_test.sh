@@ -77,4 +77,14 @@ finish twice
 [ "$rc" = 130 ] || fail "two Ctrl-C: exit $rc, not 130"
 left=$(ls -A "$out/twice")
 [ -z "$left" ] || fail "two Ctrl-C left files: $left"
+# The animation's output folder, created by the run, goes too while it is empty.
+start twice-animate "iteration" animate -c examples/animate/stars/disc.svg -a examples/animate/stars/stars.json \
+  --slices 6 --frames 4 --width 80 --max-iterations 1000000 --stall-growth 0 --closeness 1e-9 -o "$out/twice/animate"
+kill -INT "$pid"
+sleep 0.05
+kill -INT "$pid"
+finish twice-animate
+[ "$rc" = 130 ] || fail "two Ctrl-C on animate: exit $rc, not 130"
+left=$(ls -A "$out/twice")
+[ -z "$left" ] || fail "two Ctrl-C on animate left: $left"
 echo "interrupt_test: flow, pack and animate stop cleanly on Ctrl-C; a second aborts and leaves nothing"

@@ -13,8 +13,11 @@ void checkOutputPath(const std::string& path);
 // A temporary path beside `path` for writers that need a file name (cairo), and the commit.
 std::string temporaryPathFor(const std::string& path);
 void commitTemporary(const std::string& temporary, const std::string& path);
-// Removes every temporary still being written. Async-signal-safe: for a handler that ends the
-// process (a second Ctrl-C), so that no half-written file is left.
+// A folder this run created for its outputs (an animation's, the snapshots').
+void listCreatedFolder(const std::string& folder);
+// Removes every temporary still being written, then each listed folder left empty.
+// Async-signal-safe: for a handler that ends the process (a second Ctrl-C), so that no
+// half-written file, and no empty folder of the run's, is left.
 void removeTemporaries() noexcept;
 
 }  // namespace pak
