@@ -73,7 +73,7 @@ int runAnimate(AnimateArguments& args, const CLI::App& command) {
   const Scene& scene = input.scene;
   animateOptions().resolveLengths(
       args, common.lengths,
-      lengthScale(input.layout.viewBox, input.layout.width, canonicalFrameBox(simulatedPart(scene, args.options), false)));
+      lengthScale(input.layout, canonicalFrameBox(simulatedPart(scene, args.options), false)));
   std::vector<LoadedElement> elements;
   for (const AnimatedElementSpec& spec : script.elements) {
     std::vector<LoadedElement> one = loadElements({spec.svg});

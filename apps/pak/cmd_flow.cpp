@@ -33,7 +33,7 @@ int runFlow(FlowArguments& args, const CLI::App& command) {
   const LoadedScene input = loadScene(args.scene, SceneOptions{});
   const Scene& scene = input.scene;
   flowOptions().resolveLengths(args, common.lengths,
-                               lengthScale(input.layout.viewBox, input.layout.width, canonicalFrameBox(scene, true)));
+                               lengthScale(input.layout, canonicalFrameBox(scene, true)));
   const std::vector<LoadedElement> elements = loadElements(args.elements);
   const Library library = libraryOf(elements);
   if (!common.quiet) printInputWarnings(input.warnings, {&elements});

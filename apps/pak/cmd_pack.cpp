@@ -85,7 +85,7 @@ int runPack(PackArguments& args, const CLI::App& command) {
   const LoadedScene input = tiled ? LoadedScene{tileScene(tile), tileLayout(tile), {}} : loadScene(args.container, sceneOptions);
   const Scene& scene = input.scene;
   packOptions().resolveLengths(args, common.lengths,
-                               lengthScale(input.layout.viewBox, input.layout.width, canonicalFrameBox(scene, false)));
+                               lengthScale(input.layout, canonicalFrameBox(scene, false)));
   const std::vector<LoadedElement> elements = loadElements(args.elements);
   const std::vector<LoadedElement> secondaryElements = args.secondary.empty() ? std::vector<LoadedElement>{} : loadElements(args.secondary);
   Library library = libraryOf(elements);

@@ -44,7 +44,9 @@ std::optional<ParsedLength> parseLength(const std::string& text, std::string& pr
   return length;
 }
 
-LengthScale lengthScale(const Box& viewBox, double widthPx, const Box& frame) {
+LengthScale lengthScale(const SceneLayout& layout, const Box& frame) {
+  const Box& viewBox = layout.viewBox;
+  const double widthPx = layout.width;
   LengthScale scale;
   const double side = std::max(frame.width(), frame.height());
   if (!frame.empty() && side > 0.0) scale.canonicalPerUserUnit = kCanonicalSide / side;

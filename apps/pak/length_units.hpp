@@ -7,6 +7,7 @@
 #include <string>
 
 #include "pak/geom/box.hpp"
+#include "pak/io/scene_layout.hpp"
 
 namespace pak::cli {
 
@@ -24,9 +25,9 @@ struct LengthScale {
   double userUnitsPerPx = 1.0;        // the document's user units per CSS pixel (96 per inch)
 };
 
-// `viewBox` and `widthPx` describe the document (its user-unit box and its width in CSS
-// pixels, as SceneLayout has them); `frame` is what the command maps to canonical units.
-LengthScale lengthScale(const Box& viewBox, double widthPx, const Box& frame);
+// `layout` describes the document (its user-unit viewBox and its width in CSS pixels);
+// `frame` is what the command maps to canonical units.
+LengthScale lengthScale(const SceneLayout& layout, const Box& frame);
 
 double toCanonical(const ParsedLength& length, const LengthScale& scale);
 

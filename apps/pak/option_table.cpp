@@ -34,6 +34,21 @@ void assignConfigValue(double& target, const nlohmann::json& value, const std::s
   target = value.get<double>();
 }
 
+namespace {
+
+// Sets `target` from a length's text and records a unit in `given`; "" or what is wrong.
+std::string takeLength(double& target, GivenLengths* given, const std::string& name, const std::string& text) {
+  std::string problem;
+  const std::optional<ParsedLength> length = parseLength(text, problem);
+  if (!length) return problem;
+  target = length->number;
+  if (given && length->unit.empty()) given->erase(name);
+  else if (given) (*given)[name] = text;
+  return "";
+}
+
+}  // namespace
+
 void assignConfigLength(double& target, GivenLengths* given, const std::string& name, const nlohmann::json& value,
                         const std::string& key, const std::string& file) {
   if (value.is_number()) {
@@ -42,23 +57,13 @@ void assignConfigLength(double& target, GivenLengths* given, const std::string& 
     return;
   }
   if (!value.is_string()) throw InputError(file, "\"" + key + "\" must be a length: a number, or a string such as \"2mm\"");
-  std::string problem;
-  const std::optional<ParsedLength> length = parseLength(value.get<std::string>(), problem);
-  if (!length) throw InputError(file, "\"" + key + "\": " + problem);
-  target = length->number;
-  if (!given) return;
-  if (length->unit.empty()) given->erase(name);
-  else (*given)[name] = value.get<std::string>();
+  if (const std::string problem = takeLength(target, given, name, value.get<std::string>()); !problem.empty())
+    throw InputError(file, "\"" + key + "\": " + problem);
 }
 
 void setLength(double& target, GivenLengths* given, const std::string& name, const std::string& text) {
-  std::string problem;
-  const std::optional<ParsedLength> length = parseLength(text, problem);
-  if (!length) throw CLI::ValidationError("--" + name, problem);
-  target = length->number;
-  if (!given) return;
-  if (length->unit.empty()) given->erase(name);
-  else (*given)[name] = text;
+  if (const std::string problem = takeLength(target, given, name, text); !problem.empty())
+    throw CLI::ValidationError("--" + name, problem);
 }
 
 void assignConfigValue(int& target, const nlohmann::json& value, const std::string& key, const std::string& file) {

@@ -7,6 +7,13 @@
 namespace pak::cli {
 namespace {
 
+LengthScale scaleOf(const Box& viewBox, double widthPx, const Box& frame) {
+  SceneLayout layout;
+  layout.viewBox = viewBox;
+  layout.width = widthPx;
+  return lengthScale(layout, frame);
+}
+
 double canonical(const std::string& text, const LengthScale& scale) {
   std::string problem;
   const std::optional<ParsedLength> length = parseLength(text, problem);
@@ -24,7 +31,7 @@ TEST(LengthUnits, ABareNumberStaysInCanonicalUnits) {
 // A document 100 mm wide with a 400-unit viewBox (4 user units per mm), whose frame's longer
 // side is 400 user units (2.5 canonical units each).
 TEST(LengthUnits, UnitsGoThroughTheDocumentSizeAndTheFrame) {
-  const LengthScale scale = lengthScale(Box{{0, 0}, {400, 200}}, 100.0 * 96.0 / 25.4, Box{{0, 0}, {400, 150}});
+  const LengthScale scale = scaleOf(Box{{0, 0}, {400, 200}}, 100.0 * 96.0 / 25.4, Box{{0, 0}, {400, 150}});
   EXPECT_NEAR(scale.canonicalPerUserUnit, 2.5, 1e-12);
   EXPECT_NEAR(canonical("1mm", scale), 4.0 * 2.5, 1e-9);
   EXPECT_NEAR(canonical("1cm", scale), 40.0 * 2.5, 1e-9);
@@ -37,7 +44,7 @@ TEST(LengthUnits, UnitsGoThroughTheDocumentSizeAndTheFrame) {
 
 // Without a physical width a user unit is a CSS pixel, as browsers draw it.
 TEST(LengthUnits, WithoutAWidthAUserUnitIsAPixel) {
-  const LengthScale scale = lengthScale(Box{{0, 0}, {400, 200}}, 0.0, Box{{0, 0}, {1000, 10}});
+  const LengthScale scale = scaleOf(Box{{0, 0}, {400, 200}}, 0.0, Box{{0, 0}, {1000, 10}});
   EXPECT_EQ(scale.userUnitsPerPx, 1.0);
   EXPECT_NEAR(canonical("3px", scale), 3.0, 1e-12);
   EXPECT_NEAR(canonical("1in", scale), 96.0, 1e-9);
