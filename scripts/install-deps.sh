@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian packages Pak needs to build, test and benchmark.
 # Idempotent: installs only what is missing, and says what it installs.
+# --docs adds what only the docs' screenshots need (a virtual X server, a screen grabber and
+# a keyboard/mouse driver for it); `make test` never passes it.
 set -euo pipefail
 
 packages=(
@@ -16,7 +18,22 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   help2man              # man pages from each command's --help (make install)
   libxml2-utils         # xmllint: the tests check that every SVG is well-formed
+  inkscape              # the Inkscape extension and its test; inkscape ships inkex, which
+  python3-lxml python3-cssselect python3-numpy  # imports these (only recommended by inkscape)
 )
+
+docs_packages=(
+  xvfb                  # a headless X server for a real Inkscape window
+  imagemagick           # `import` grabs that window as a PNG
+  xdotool               # opens menus and dialogues in it
+)
+
+for arg in "$@"; do
+  case "$arg" in
+    --docs) packages+=("${docs_packages[@]}") ;;
+    *) echo "install-deps: unknown option '$arg' (known: --docs)" >&2; exit 2 ;;
+  esac
+done
 
 missing=()
 for p in "${packages[@]}"; do
