@@ -3,7 +3,7 @@ JOBS ?= $(shell nproc)
 RELEASE_DIR := build/release
 TEST_DIR := build/test
 
-.PHONY: all deps release demo test bench install clean
+.PHONY: all deps release demo test bench install install-inkscape clean
 PREFIX ?= /usr/local
 
 all: release
@@ -33,6 +33,17 @@ test: deps
 # share/bash-completion/completions/): `make install PREFIX=$$HOME/.local` needs no root.
 install: release
 	@cmake --install $(RELEASE_DIR) --prefix $(PREFIX)
+
+# The Inkscape extension (Extensions > Pak > Pack and Flow) into the user's extensions folder,
+# the one `inkscape --user-data-directory` names (else ~/.config/inkscape); override with
+# `make install-inkscape INKSCAPE_EXTENSIONS=DIR`. The extension runs `pak` from the PATH.
+INKSCAPE_EXTENSIONS ?= $(shell inkscape --user-data-directory 2> /dev/null | tail -n 1 | grep . || echo $$HOME/.config/inkscape)/extensions
+install-inkscape:
+	@mkdir -p "$(INKSCAPE_EXTENSIONS)/pak"
+	@cp inkscape/*.inx inkscape/*.py "$(INKSCAPE_EXTENSIONS)/pak/"
+	@echo "install-inkscape: installed in $(INKSCAPE_EXTENSIONS)/pak; restart Inkscape, then Extensions > Pak"
+	@command -v pak > /dev/null || echo "install-inkscape: note: pak is not on the PATH; run make install" \
+	  "(PREFIX=$$HOME/.local needs no root), or give the extension its path (PAK, or its Advanced tab)"
 
 # Whole-run benchmark scenes; appends rows to bench/results.csv.
 bench: release
