@@ -51,8 +51,11 @@ def run_pak(pak, arguments, hide_prefix=""):
         raise inkex.AbortExtension(f"Pak: cannot run '{pak}': {error.strerror}. {NOT_FOUND_HELP}") from None
 
     # Inkscape's Cancel button terminates this script: stop pak too rather than leave it running.
-    def stop(signum, _frame):
+    def stop(_signum, _frame):
         process.kill()
+        process.wait()
+        process.stdout.close()
+        process.stderr.close()
         raise inkex.AbortExtension("Pak: cancelled.")
     previous = {s: signal.signal(s, stop) for s in (signal.SIGTERM, signal.SIGINT)}
     try:
