@@ -79,7 +79,7 @@ class PakEffect(inkex.EffectExtension):
         if self.options.elements_source == "selection" and not elements:
             raise inkex.AbortExtension(
                 "Pak: nothing to pack. Select the objects to pack together with the container "
-                "(Shift+click), or choose 'SVG files in a folder' in the dialogue.")
+                "(Shift+click), or choose 'Fill with: the SVG files of a folder' in the dialogue.")
         folder = self._checked_folder()
 
         with tempfile.TemporaryDirectory(prefix="pak-inkscape-") as work:

@@ -15,14 +15,15 @@ from pak_inkex import inkex
 HELPER_LAYERS = ("guides", "spines", "fixed")
 
 
-def layer_name(group):
-    return (group.get("inkscape:label") or group.get("id") or "").strip().lower()
+def layer_names(group):
+    """The names a layer goes by: its label in Inkscape and its id (Illustrator's layer name)."""
+    return {(group.get(attribute) or "").strip().lower() for attribute in ("inkscape:label", "id")}
 
 
 def find_layer(svg, name):
     """The first layer (in document order) called name, or None."""
     for group in svg.iter("{http://www.w3.org/2000/svg}g"):
-        if isinstance(group, inkex.Layer) and layer_name(group) == name:
+        if isinstance(group, inkex.Layer) and name in layer_names(group):
             return group
     return None
 
