@@ -21,9 +21,10 @@ def layer_names(group):
 
 
 def find_layer(svg, name):
-    """The first layer (in document order) called name, or None."""
+    """The first layer (in document order) called name, or None. A layer is an Inkscape layer,
+    or a group at the top of the document (how Illustrator writes its layers)."""
     for group in svg.iter("{http://www.w3.org/2000/svg}g"):
-        if isinstance(group, inkex.Layer) and name in layer_names(group):
+        if (isinstance(group, inkex.Layer) or group.getparent() is svg) and name in layer_names(group):
             return group
     return None
 
