@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Takes the screenshots of docs/inkscape.md from a real Inkscape on a virtual screen (Xvfb):
-# the Pack and Flow dialogues over examples/inkscape/demo.svg, and each result on the canvas.
+# the Pack and Flow dialogues over examples/inkscape/demo.svg, each result on the canvas, and
+# the Extensions menu.
 # Needs `scripts/install-deps.sh --docs` (xvfb, imagemagick, xdotool) and a built pak
 # (PAK, else build/release/pak). The extension runs from a throw-away Inkscape profile, so
 # the user's own Inkscape settings are neither used nor changed.
@@ -111,4 +112,16 @@ session "$work/demo.svg" heart,star,leaf,ladybird,drop,flower org.pak.pack Pack 
 # The flow picture shows the guides, which demo.svg keeps hidden.
 sed 's/id="guides" style="display:none"/id="guides" style="display:inline"/' examples/inkscape/demo.svg > "$work/flow-demo.svg"
 session "$work/flow-demo.svg" heart,leaf org.pak.flow Flow flow 511 152 60 544 487 457 487
+# The menu: Extensions, then Pak (its place in the alphabetical list of Inkscape's own).
+inkscape --with-gui "$work/demo.svg" > "$work/inkscape.log" 2>&1 &
+inkscape=$!
+main=$(window "demo.svg - Inkscape")
+sleep 3
+xdotool windowsize "$main" "$width" "$height" windowmove "$main" 0 0
+sleep 1
+click 423 12
+xdotool mousemove 430 313
+sleep 2
+import -window root "$work/shot.png"
+convert "$work/shot.png" -crop 760x360+360+0 +repage -strip "$out/inkscape-menu.png"
 ls -l "$out"/inkscape-*.png
