@@ -82,6 +82,7 @@ nlohmann::json animateReport(const AnimateArguments& args, const AnimatedPacking
   // The counts above are of the frames as written, after the separation.
   report["frames-separated"] = audit.framesSeparated;
   report["smallest-separation-scale"] = audit.smallestSeparationScale;
+  report["guided-smallest-separation-scale"] = audit.smallestGuidedSeparationScale;
   if (!audit.evennessTimes.empty()) {
     const auto worst = [](const std::vector<double>& v) { return *std::max_element(v.begin(), v.end()); };
     report["evenness-over-frames"] = {{"frames", audit.evennessTimes.size()},
@@ -117,6 +118,7 @@ nlohmann::json animateReport(const AnimateArguments& args, const AnimatedPacking
       {"largest-overlap-area-fraction", "the largest overlap area in one rendered frame, over the container's area"},
       {"frames-separated", "rendered frames in which the frame separation shrank an element"},
       {"smallest-separation-scale", "the smallest scale the frame separation gave an element in a rendered frame (1: none shrank)"},
+      {"guided-smallest-separation-scale", "the same for the guided elements only (1: none shrank, or none is guided): with --guided-growth, a guided element's drawn size is its growth times this"},
       {"evenness-over-frames", "negative space and pocket share P2 (docs/metrics.md) of --evenness-frames frames spread over the animation: median, worst, and each"},
       {"mean-centroid-acceleration", "how frantically the unguided elements move (thesis Fig. 5.21): the mean over them and the rendered frames of the length of the centroid's second difference from frame to frame, canonical units per frame squared"},
       {"guided-growth-ratio", "the smallest, over guided elements and slices, of a guided slice's growth over the median growth of the unguided elements' slices at that t (1 when none is guided)"}};

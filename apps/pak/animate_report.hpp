@@ -18,6 +18,7 @@ struct FrameAudit {
   // Frame separation (FrameSeparationOptions): frames it changed, the smallest scale it gave.
   int framesSeparated = 0;
   double smallestSeparationScale = 1.0;
+  double smallestGuidedSeparationScale = 1.0;  // of a guided element
   // Evenness (measureEvenness) of `evennessFrames` frames spread evenly over the animation.
   std::vector<double> evennessTimes, negativeRatio, pocketShare2;
 };

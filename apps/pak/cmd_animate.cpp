@@ -81,6 +81,8 @@ int runAnimate(AnimateArguments& args, const CLI::App& command) {
     elements.push_back(std::move(one.front()));
   }
   const Library library = libraryOf(elements);
+  checkOutputsBeforeTheRun({{"--png", common.png}, {"--report", common.report}, {"--video", args.video}},
+                           inputFiles({args.container, args.animation, common.config, args.resume}, {&library}));
   if (!common.quiet) printInputWarnings(input.warnings, {&elements});
 
   const std::uint64_t fingerprint = runFingerprint(args, library);
@@ -125,20 +127,27 @@ int runAnimate(AnimateArguments& args, const CLI::App& command) {
     return script.loop ? static_cast<double>(i) / count : (count > 1 ? static_cast<double>(i) / (count - 1) : 0.0);
   };
   // packAnimation separated the frames at its samples (an eased scale per element over t); a
-  // frame that still overlaps is separated on its own. `scale`: the smallest scale the two
-  // together gave an element. `check`, when given, gets the frame's verifyPacking if the
-  // separation made it.
-  auto frameAt = [&](double t, double& scale, std::optional<PackingCheck>* check = nullptr) {
+  // frame that still overlaps is separated on its own. `shrink`: the smallest scale the two
+  // together gave an element, and a guided one. `check`, when given, gets the frame's
+  // verifyPacking if the separation made it.
+  struct Shrink { double any = 1.0, guided = 1.0; };
+  auto frameAt = [&](double t, Shrink& shrink, std::optional<PackingCheck>* check = nullptr) {
     Packing frame = animationFrame(animation, t);
     std::vector<double> own;
     separateFrame(frame, options.frameSeparation, &own, check);
-    scale = 1.0;
-    for (std::size_t e = 0; e < own.size(); ++e) scale = std::min(scale, separationScaleAt(animation, e, t) * own[e]);
+    shrink = {};
+    for (std::size_t e = 0; e < own.size(); ++e) {
+      // A loop's copies and a mirror's twins come after the elements; each names its own.
+      const auto source = static_cast<std::size_t>(frame.elements[e].libraryIndex);
+      const double scale = separationScaleAt(animation, source, t) * own[e];
+      shrink.any = std::min(shrink.any, scale);
+      if (frame.elements[e].guided) shrink.guided = std::min(shrink.guided, scale);
+    }
     return frame;
   };
   auto drawingAt = [&](double t) {
-    double scale;
-    return packingDrawing(input.layout, frameAt(t, scale));
+    Shrink shrink;
+    return packingDrawing(input.layout, frameAt(t, shrink));
   };
   AnimationOutputOptions output;
   output.duration = script.duration;
@@ -153,13 +162,14 @@ int runAnimate(AnimateArguments& args, const CLI::App& command) {
   packings.reserve(frameCount);
   frames.reserve(frameCount);
   int framesSeparated = 0;
-  double smallestScale = 1.0;
+  Shrink smallest;
   for (int i = 0; i < frameCount; ++i) {
-    double scale;
-    packings.push_back(frameAt(frameTime(i, frameCount), scale, &checks[i]));
+    Shrink shrink;
+    packings.push_back(frameAt(frameTime(i, frameCount), shrink, &checks[i]));
     frames.push_back(packingDrawing(input.layout, packings.back()));
-    framesSeparated += scale < 1.0 ? 1 : 0;
-    smallestScale = std::min(smallestScale, scale);
+    framesSeparated += shrink.any < 1.0 ? 1 : 0;
+    smallest.any = std::min(smallest.any, shrink.any);
+    smallest.guided = std::min(smallest.guided, shrink.guided);
   }
   if (!args.noGif) writeGif(frames, (out / "animation.gif").string(), output);
   if (args.pngFrames) writePngFrames(frames, (out / "frames").string(), output);
@@ -193,7 +203,8 @@ int runAnimate(AnimateArguments& args, const CLI::App& command) {
   FrameAudit audit =
       auditFrames(packings, checks, times, animation.container, common.report.empty() ? 0 : args.evennessFrames);
   audit.framesSeparated = framesSeparated;
-  audit.smallestSeparationScale = smallestScale;
+  audit.smallestSeparationScale = smallest.any;
+  audit.smallestGuidedSeparationScale = smallest.guided;
   AnimateTimes seconds;
   seconds.wall = std::chrono::duration<double>(Clock::now() - start).count();
   seconds.simulation = std::chrono::duration<double>(simulated - start).count();

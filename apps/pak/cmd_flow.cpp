@@ -36,6 +36,8 @@ int runFlow(FlowArguments& args, const CLI::App& command) {
                                lengthScale(input.layout, canonicalFrameBox(scene, true)));
   const std::vector<LoadedElement> elements = loadElements(args.elements);
   const Library library = libraryOf(elements);
+  checkOutputsBeforeTheRun({{"-o", common.output}, {"--png", common.png}, {"--report", common.report}},
+                           inputFiles({args.scene, common.config}, {&library}));
   if (!common.quiet) printInputWarnings(input.warnings, {&elements});
 
   FlowCallbacks callbacks;

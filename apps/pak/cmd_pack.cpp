@@ -90,6 +90,8 @@ int runPack(PackArguments& args, const CLI::App& command) {
   const std::vector<LoadedElement> secondaryElements = args.secondary.empty() ? std::vector<LoadedElement>{} : loadElements(args.secondary);
   Library library = libraryOf(elements);
   Library secondaryLibrary = libraryOf(secondaryElements);
+  checkOutputsBeforeTheRun({{"-o", common.output}, {"--png", common.png}, {"--report", common.report}, {"--tile-preview", args.tilePreview}},
+                           inputFiles({args.container, common.config}, {&library, &secondaryLibrary}));
   if (!common.quiet) printInputWarnings(input.warnings, {&elements, &secondaryElements});
 
   const bool tty = isatty(STDERR_FILENO);

@@ -9,6 +9,41 @@
 
 namespace pak::cli {
 
+namespace {
+
+// Whether two paths name one file, whether or not it exists yet.
+bool sameFile(const std::string& a, const std::string& b) {
+  std::error_code ec;
+  if (std::filesystem::exists(a, ec) && std::filesystem::exists(b, ec)) return std::filesystem::equivalent(a, b, ec);
+  const std::filesystem::path ca = std::filesystem::weakly_canonical(a, ec);
+  if (ec) return false;
+  const std::filesystem::path cb = std::filesystem::weakly_canonical(b, ec);
+  return !ec && ca == cb;
+}
+
+}  // namespace
+
+std::vector<std::string> inputFiles(std::vector<std::string> files, const std::vector<const Library*>& libraries) {
+  for (const Library* library : libraries)
+    for (const ElementArt& element : *library) files.push_back(element.source);
+  return files;
+}
+
+void checkOutputsBeforeTheRun(const std::vector<PlannedOutput>& outputs, const std::vector<std::string>& inputs) {
+  for (std::size_t i = 0; i < outputs.size(); ++i) {
+    const PlannedOutput& out = outputs[i];
+    if (out.path.empty()) continue;
+    checkOutputPath(out.path);
+    for (const std::string& input : inputs)
+      if (!input.empty() && sameFile(out.path, input))
+        throw InputError(out.path, std::string(out.option) + " would overwrite an input of this run; write it elsewhere");
+    for (std::size_t j = 0; j < i; ++j)
+      if (!outputs[j].path.empty() && sameFile(out.path, outputs[j].path))
+        throw InputError(out.path, std::string("given to both ") + outputs[j].option + " and " + out.option +
+                                       "; each output needs its own file");
+  }
+}
+
 void createFolder(const std::string& folder) {
   std::error_code ec;
   const bool created = std::filesystem::create_directories(folder, ec);

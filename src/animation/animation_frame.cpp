@@ -48,6 +48,7 @@ Packing animationFrame(const AnimatedPacking& animation, double t) {
     }
     scaleAboutCentre(placed, separation);  // frame separation (separateAnimation)
     placed.leavesContainer = element.leavesContainer;
+    placed.guided = element.guided;
     packing.elements.push_back(std::move(placed));
   }
   // An element whose loop moves it is also where it was one loop ago and will be one loop on

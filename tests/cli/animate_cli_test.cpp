@@ -198,6 +198,12 @@ TEST(CliAnimate, TheSwallowFliesThroughTheCloudAndOutAndFramesTile) {
   const auto report = nlohmann::json::parse(readWholeFile(dir.file("r.json")));
   EXPECT_EQ(report["frames-with-overlaps"], 0);
   EXPECT_EQ(report["frames-with-element-outside"], 0);  // the swallow outside the cloud is not "outside"
+  // The swallow is guided: its smallest drawn scale is reported on its own (its copies count as
+  // the swallow), and no element was drawn smaller.
+  const double guided = report["guided-smallest-separation-scale"], any = report["smallest-separation-scale"];
+  EXPECT_GT(guided, 0.0);
+  EXPECT_LE(guided, 1.0);
+  EXPECT_GE(guided, any);
   // At t = 0 the swallow sits on the canvas's left edge: it is drawn there, one canvas width
   // further on (leaving the frame on the right, where the next tile begins) and one back.
   const std::string first = readWholeFile((dir.path() / "out" / "svg-frames" / "frame-0000.svg").string());
@@ -217,6 +223,7 @@ TEST(CliAnimate, PenguinsTurnIntoGiraffesInACleanPacking) {
   EXPECT_EQ(report["frames-with-overlaps"], 0);
   EXPECT_EQ(report["frames-with-element-outside"], 0);
   EXPECT_EQ(report["parameters"]["k-torsion"], 10.0);  // what holds each slice at its scripted turn
+  EXPECT_EQ(report["guided-smallest-separation-scale"], 1.0);  // none is guided
 }
 
 TEST(CliAnimate, TheMirroredManeIsSymmetricAndCheckedOverBothHalves) {

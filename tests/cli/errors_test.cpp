@@ -11,6 +11,7 @@
 
 namespace fs = std::filesystem;
 using pak::testing::PakRun;
+using pak::testing::readWholeFile;
 using pak::testing::runPak;
 using pak::testing::ScratchFolder;
 using pak::testing::shellQuoted;
@@ -154,6 +155,34 @@ TEST(CliErrors, OptionErrorsNameTheOption) {
   };
   for (const auto& [arguments, start] : cases) expectOneLineError(arguments, start);
   EXPECT_TRUE(fs::is_empty(out.path()));
+}
+
+// Every output is checked before the run: a missing folder, an output that is an input, two
+// outputs in one file. Nothing is written, the inputs are untouched, and no folder the run
+// would have made (snapshots, animate's output) is made.
+TEST(CliErrors, OutputsAreCheckedBeforeTheRun) {
+  ScratchFolder out("errors-outputs");
+  const std::string original = readWholeFile(std::string(PAK_SOURCE_DIR) + "/examples/scene.svg");
+  ASSERT_FALSE(original.empty());
+  const std::string scene = out.write("scene.svg", original);
+  const std::string missing = out.file("no-such-folder") + "/r.json";
+  const std::string o = out.file("o.svg"), snapshots = out.file("snapshots"), frames = out.file("frames");
+  const std::pair<std::string, std::string> cases[] = {
+      {kPack + "-o " + shellQuoted(o) + " --snapshots " + shellQuoted(snapshots) + " --report " + shellQuoted(missing),
+       missing + ": cannot write: folder '" + out.file("no-such-folder") + "' does not exist"},
+      {"pack -c " + shellQuoted(scene) + " -e examples/elements -q -o " + shellQuoted(scene),
+       scene + ": -o would overwrite an input of this run"},
+      {kPack + "-o " + shellQuoted(o) + " --png " + shellQuoted(o), o + ": given to both -o and --png"},
+      {kFlow + "-o " + shellQuoted(o) + " --report " + shellQuoted(o), o + ": given to both -o and --report"},
+      {kAnimate + "-o " + shellQuoted(frames) + " --report examples/animate/stars/stars.json",
+       "examples/animate/stars/stars.json: --report would overwrite an input of this run"},
+      {kAnimate + "-o " + shellQuoted(frames) + " --png " + shellQuoted(missing), missing + ": cannot write: folder"},
+  };
+  for (const auto& [arguments, start] : cases) expectOneLineError(arguments, start);
+  EXPECT_EQ(readWholeFile(scene), original);
+  EXPECT_FALSE(fs::exists(o));
+  EXPECT_FALSE(fs::exists(snapshots));
+  EXPECT_FALSE(fs::exists(frames));
 }
 
 // pak animate checks the forces it shares with pak pack under pack's names, and takes its old

@@ -27,6 +27,8 @@ struct PlacedElement {
   int container = 0;        // index into Packing::containers: the one it was seeded in
   // AnimationPak: it may leave the container; only its part inside is checked (checkedOutlines).
   bool leavesContainer = false;
+  // AnimationPak: it follows its targets (the report gives its smallest drawn scale).
+  bool guided = false;
 };
 
 // TimeLimit: the run ran out of --time-limit; Interrupted: RunOptions::stopRequest was set
