@@ -36,7 +36,9 @@ std::uint64_t runFingerprint(const AnimateArguments& args, const Library& librar
   parameters.erase("max-iterations");
   parameters.erase("time-limit");
   // The frame separation runs after the simulation: a resumed run may separate differently.
-  for (const char* key : {"frame-separation", "frame-separation-samples", "frame-separation-ramp"}) parameters.erase(key);
+  for (const char* key :
+       {"frame-separation", "frame-separation-samples", "frame-separation-ramp", "frame-separation-shrink-only"})
+    parameters.erase(key);
   std::uint64_t h = fingerprintBytes(parameters.dump());
   h = fingerprintBytes(readTextFile(args.container), h);
   h = fingerprintBytes(readTextFile(args.animation), h);

@@ -47,6 +47,7 @@ Packing animationFrame(const AnimatedPacking& animation, double t) {
         for (Vec2& p : sub.points) p = artPoints[k++];
     }
     scaleAboutCentre(placed, separation);  // frame separation (separateAnimation)
+    translateElement(placed, separationShiftAt(animation, e, t));
     placed.leavesContainer = element.leavesContainer;
     placed.guided = element.guided;
     packing.elements.push_back(std::move(placed));

@@ -79,6 +79,7 @@ PackingCheck verifyPacking(const std::vector<Region>& elements, const Region& co
   for (const Overlap& o : overlaps) {
     check.offending.push_back(o.a);
     check.offending.push_back(o.b);
+    check.overlapping.emplace_back(o.a, o.b);
     ++check.overlappingPairs;
     check.problems.push_back("elements " + std::to_string(o.a) + " and " + std::to_string(o.b) + " overlap by " +
                              messageNumber(o.area));
@@ -89,6 +90,7 @@ PackingCheck verifyPacking(const std::vector<Region>& elements, const Region& co
     const double outside = area(subtract(elements[e], container));
     if (outside > tolerance) {
       check.offending.push_back(e);
+      check.outside.push_back(e);
       ++check.elementsOutside;
       check.outsideArea += outside;
       check.problems.push_back("element " + std::to_string(e) + " lies outside the container (or in a hole) by " +

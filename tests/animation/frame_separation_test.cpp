@@ -70,6 +70,39 @@ TEST(FrameSeparation, NoRoundsChangeNothing) {
   EXPECT_EQ(frame.elements[0].skin, threeSquares().elements[0].skin);
 }
 
+// A guided element is held on its path: the element in its way moves off it, away from where
+// they overlap, and neither shrinks; with shrinkOnly both shrink, as any other pair.
+TEST(FrameSeparation, AnElementInAGuidedOnesWayMovesOffItAndTheGuidedOneKeepsItsSize) {
+  Packing frame = threeSquares();
+  frame.elements[0].guided = true;
+  std::vector<double> scales;
+  std::vector<Vec2> shifts;
+  EXPECT_EQ(separateFrame(frame, {}, &scales, nullptr, &shifts), 1.0);
+  EXPECT_EQ(checked(frame).overlappingPairs, 0);
+  EXPECT_EQ(scales, (std::vector<double>{1.0, 1.0, 1.0}));
+  ASSERT_EQ(shifts.size(), 3u);
+  EXPECT_EQ(shifts[0], Vec2{});
+  EXPECT_EQ(shifts[2], Vec2{});
+  // The overlap is the strip x ∈ [29, 30]: the second square goes right (and a little up, away
+  // from the strip's centroid), 1 % of its radius √200 a round, until it is clear of the first.
+  EXPECT_GE(shifts[1].x, 1.0);
+  EXPECT_LT(shifts[1].x, 1.0 + 0.01 * std::sqrt(200.0));
+  EXPECT_GT(shifts[1].y, 0.0);
+  EXPECT_LT(shifts[1].y, 0.2);
+  const Vec2 moved = threeSquares().elements[1].skin[0] + shifts[1];
+  EXPECT_NEAR(frame.elements[1].skin[0].x, moved.x, 1e-12);
+  EXPECT_NEAR(frame.elements[1].skin[0].y, moved.y, 1e-12);
+
+  Packing evenly = threeSquares();
+  evenly.elements[0].guided = true;
+  FrameSeparationOptions shrinkOnly;
+  shrinkOnly.shrinkOnly = true;
+  separateFrame(evenly, shrinkOnly, &scales, nullptr, &shifts);
+  EXPECT_NEAR(scales[0], std::pow(0.99, 6), 1e-12);
+  EXPECT_NEAR(scales[1], std::pow(0.99, 6), 1e-12);
+  EXPECT_EQ(shifts[1], Vec2{});
+}
+
 TEST(FrameSeparation, ScaleBetweenSamplesIsInterpolatedAndALoopWrapsToTheFirst) {
   AnimatedPacking a;
   a.elements.resize(1);
@@ -79,8 +112,12 @@ TEST(FrameSeparation, ScaleBetweenSamplesIsInterpolatedAndALoopWrapsToTheFirst) 
   EXPECT_DOUBLE_EQ(separationScaleAt(a, 0, 0.75), 0.9);  // no loop: the last sample holds
   a.loop = true;
   EXPECT_DOUBLE_EQ(separationScaleAt(a, 0, 0.75), 0.95);  // a loop comes back to t = 0's
+  a.elements[0].separationShift = {{0.0, 0.0}, {2.0, 4.0}};
+  EXPECT_EQ(separationShiftAt(a, 0, 0.25), (Vec2{1.0, 2.0}));  // shifts the same way
   a.elements[0].separationScale.clear();
+  a.elements[0].separationShift.clear();
   EXPECT_EQ(separationScaleAt(a, 0, 0.3), 1.0);
+  EXPECT_EQ(separationShiftAt(a, 0, 0.3), Vec2{});
 }
 
 TEST(FrameSeparation, PackedFramesAtTheSamplesAreCleanAndTheShrinkingIsEased) {

@@ -71,8 +71,10 @@ struct AnimatedElement {
   std::vector<double> sliceTimes;            // t ∈ [0, 1] of each slice
   std::vector<std::vector<Vec2>> slices;     // each slice's mesh vertices, input coordinates
   std::vector<double> sliceGrowth;           // g of each slice
-  // Frame separation: its scale at AnimatedPacking::separationTimes (empty: none).
+  // Frame separation: its scale, and its shift (input units, applied after the scale), at
+  // AnimatedPacking::separationTimes (empty: none).
   std::vector<double> separationScale;
+  std::vector<Vec2> separationShift;
 };
 
 struct AnimatedPacking {
@@ -133,14 +135,18 @@ void separateAnimation(AnimatedPacking& animation, const FrameSeparationOptions&
 // its part inside), then the fixed art (an obstacle) as one more outline when there is any.
 std::vector<Region> checkedOutlines(const Packing& frame);
 // One frame's separation, the safety net at t between the samples: each offending element
-// shrinks a step per round until the frame is clean. Returns the smallest scale it gave an
-// element (1: the frame was clean, or rounds = 0); `scales`, when given, gets every element's;
-// `check`, when given, gets the verifyPacking of the frame as returned if the last round made
-// one (it did unless rounds = 0 or the rounds ran out), so a caller need not check it again.
+// shrinks a step per round until the frame is clean; an unguided element in a guided one's
+// way first moves off it (FrameSeparationOptions::shrinkOnly). Returns the smallest scale it
+// gave an element (1: the frame was clean, or rounds = 0); `scales` and `shifts`, when given,
+// get every element's; `check`, when given, gets the verifyPacking of the frame as returned if
+// the last round made one (it did unless rounds = 0 or the rounds ran out), so a caller need
+// not check it again.
 double separateFrame(Packing& frame, const FrameSeparationOptions& options, std::vector<double>* scales = nullptr,
-                     std::optional<PackingCheck>* check = nullptr);
+                     std::optional<PackingCheck>* check = nullptr, std::vector<Vec2>* shifts = nullptr);
 // Element e's scale at t from the animation's separation (eased between its samples; 1 when
 // it has none): animationFrame applies it, and a frame's own separation comes on top.
 double separationScaleAt(const AnimatedPacking& animation, std::size_t e, double t);
+// The same for its shift ({0, 0} when it has none).
+Vec2 separationShiftAt(const AnimatedPacking& animation, std::size_t e, double t);
 
 }  // namespace pak

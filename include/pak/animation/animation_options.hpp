@@ -33,6 +33,12 @@ struct FrameSeparationOptions {
   double areaTolerance = 1e-6;
   int samples = 0;     // frames checked over t ∈ [0, 1]; 0: twice the slices
   double ramp = 0.05;  // an element's shrinking eases in and out over this much of t
+  // By default an unguided element overlapping a guided one first moves away from where they
+  // overlap, by (1 − step) of its radius per round, for at most twice `rounds` rounds; only
+  // then do the two shrink. A guided element is held on its path, and shrinking both about their
+  // centres cannot take a tail off its back (docs/animationpak.md, sixth round). true: every
+  // offending element shrinks, as before.
+  bool shrinkOnly = false;
 };
 
 struct AnimationOptions {

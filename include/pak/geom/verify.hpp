@@ -2,6 +2,7 @@
 // Invariant checkers shipped with the library and called by the tests.
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "pak/geom/polygon.hpp"
@@ -27,6 +28,8 @@ struct PackingCheck {
   int selfIntersecting = 0;   // elements whose outline crosses itself (see checkSelfIntersections)
   std::vector<std::string> problems;
   std::vector<std::size_t> offending;  // elements in an overlapping pair or outside, ascending
+  std::vector<std::pair<std::size_t, std::size_t>> overlapping;  // the pairs (a < b), ascending
+  std::vector<std::size_t> outside;                              // ascending
 };
 
 struct PackingCheckOptions {
