@@ -128,6 +128,9 @@ struct Style {
   double strokeOpacity = 1.0;
   double strokeWidth = 1.0;
   FillRule fillRule = FillRule::NonZero;
+  StrokeCap lineCap = StrokeCap::Butt;
+  StrokeJoin lineJoin = StrokeJoin::Miter;
+  double miterLimit = 4.0;
   bool visible = true;
   std::uint32_t color = 0x000000;  // the `color` property, used by currentColor
 };
@@ -497,6 +500,17 @@ class NodeContext {
   void set(tag::attribute::stroke_width, double v) {
     if (std::isfinite(v) && v >= 0) style_.strokeWidth = v;
   }
+  void set(tag::attribute::stroke_linecap, tag::value::butt) { style_.lineCap = StrokeCap::Butt; }
+  void set(tag::attribute::stroke_linecap, tag::value::round) { style_.lineCap = StrokeCap::Round; }
+  void set(tag::attribute::stroke_linecap, tag::value::square) { style_.lineCap = StrokeCap::Square; }
+  void set(tag::attribute::stroke_linejoin, tag::value::miter) { style_.lineJoin = StrokeJoin::Miter; }
+  void set(tag::attribute::stroke_linejoin, tag::value::round) { style_.lineJoin = StrokeJoin::Round; }
+  void set(tag::attribute::stroke_linejoin, tag::value::bevel) { style_.lineJoin = StrokeJoin::Bevel; }
+  // SVG: a miter limit below 1 is an error; the property is then ignored.
+  void set(tag::attribute::stroke_miterlimit, double v) {
+    if (std::isfinite(v) && v >= 1.0) style_.miterLimit = v;
+    else state_->warn(describe(), "ignored stroke-miterlimit " + formatNumber(v) + " (must be at least 1)");
+  }
   void set(tag::attribute::fill_rule, tag::value::nonzero) { style_.fillRule = FillRule::NonZero; }
   void set(tag::attribute::fill_rule, tag::value::evenodd) { style_.fillRule = FillRule::EvenOdd; }
   void set(tag::attribute::display, tag::value::none) { displayNone_ = true; }
@@ -668,6 +682,9 @@ class ShapeContext : public NodeContext {
     shape.strokeWidth = style_.strokeWidth * m.lengthScale();
     shape.opacity = effectiveOpacity();
     shape.fillRule = style_.fillRule;
+    shape.lineCap = style_.lineCap;
+    shape.lineJoin = style_.lineJoin;
+    shape.miterLimit = style_.miterLimit;
     shape.id = id_;
     shape.tag = tag_;
     shape.line = state_->lines->lineOf(node_);
@@ -836,7 +853,8 @@ using StyleAttributes =
     boost::mpl::vector<tag::attribute::transform, tag::attribute::fill, tag::attribute::stroke,
                        tag::attribute::fill_opacity, tag::attribute::stroke_opacity,
                        tag::attribute::opacity, tag::attribute::stroke_width, tag::attribute::fill_rule,
-                       tag::attribute::display, tag::attribute::visibility, tag::attribute::color>;
+                       tag::attribute::stroke_linecap, tag::attribute::stroke_linejoin,
+                       tag::attribute::stroke_miterlimit, tag::attribute::display, tag::attribute::visibility, tag::attribute::color>;
 
 using StructureAttributes = boost::mpl::vector<
     boost::mpl::pair<tag::element::svg, tag::attribute::viewBox>,
@@ -1401,9 +1419,15 @@ SvgDocument readSvgString(const std::string& text, const std::string& name, cons
 
   for (PendingShape& pending : state.shapes) {
     SvgShape shape = std::move(pending.shape);
+    // A zero-length subpath (`M4 20h0`, a dot in outline icons) is painted by round and
+    // square caps; it is kept as one point.
+    const bool strokesDots = pending.stroke.solid.kind != PaintKind::None || !pending.stroke.server.empty();
+    const bool dots = strokesDots && shape.strokeWidth > 0.0 && shape.lineCap != StrokeCap::Butt;
     for (const CurveSubpath& curves : pending.subpaths) {
       Subpath subpath = flatten(curves, tolerance);
-      if (subpath.points.size() >= 2) shape.subpaths.push_back(std::move(subpath));
+      const bool dot = dots && subpath.points.size() == 1 && (!curves.segments.empty() || curves.closed);
+      if (dot) subpath.closed = false;
+      if (subpath.points.size() >= 2 || dot) shape.subpaths.push_back(std::move(subpath));
     }
     if (shape.subpaths.empty()) {
       state.warn(pending.description, "no drawable geometry; skipped");

@@ -415,6 +415,69 @@ TEST(SvgReaderVisibility, UseTextAndImageAreSkippedWithAWarning) {
   EXPECT_EQ(skipped, 3);
 }
 
+// ---- strokes: caps, joins, miter limit ----------------------------------------------------
+
+// Area of everything the only shape paints (fill and stroke).
+double paintedArea(const std::string& body) {
+  SvgDocument document = read(body);
+  EXPECT_EQ(document.shapes.size(), 1u) << body;
+  if (document.shapes.empty()) return 0.0;
+  return area(paintedRegion(document.shapes.front()));
+}
+
+// A horizontal stroke 80 long and 10 wide: caps add nothing (butt, SVG's default), a half
+// disc at each end (round) or 5 at each end (square).
+TEST(SvgReaderStroke, LineCapsShapeTheEnds) {
+  const std::string line = R"~(<path d="M10 50 H90" fill="none" stroke="#000" stroke-width="10")~";
+  EXPECT_NEAR(paintedArea(line + "/>"), 800.0, 0.5);
+  EXPECT_NEAR(paintedArea(line + R"~( stroke-linecap="butt"/>)~"), 800.0, 0.5);
+  EXPECT_NEAR(paintedArea(line + R"~( stroke-linecap="round"/>)~"), 800.0 + kPi * 25, 2.0);  // arcs are polygons
+  EXPECT_NEAR(paintedArea(line + R"~( style="stroke-linecap:square"/>)~"), 900.0, 0.5);
+}
+
+// A right-angled corner, two 40-long legs 10 wide with butt ends (775 without any join): the
+// miter fills the 5×5 outer corner, round a quarter disc, bevel less than either.
+TEST(SvgReaderStroke, LineJoinsShapeTheCorners) {
+  const std::string corner = R"~(<path d="M10 10 H50 V50" fill="none" stroke="#000" stroke-width="10")~";
+  EXPECT_NEAR(paintedArea(corner + "/>"), 800.0, 0.5);  // miter: SVG's default
+  EXPECT_NEAR(paintedArea(corner + R"~( stroke-linejoin="round"/>)~"), 775.0 + kPi * 25 / 4, 1.0);
+  const double bevel = paintedArea(corner + R"~( stroke-linejoin="bevel"/>)~");
+  EXPECT_GT(bevel, 775.0 + 12.5 - 0.5);  // at least the bevel's triangle
+  EXPECT_LT(bevel, 800.0 - 1.0);         // and less than the miter
+}
+
+// Inherited from a group's style, like the other presentation properties.
+TEST(SvgReaderStroke, CapsAndJoinsAreInherited) {
+  SvgDocument document = read(R"~(<g style="stroke-linecap:round;stroke-linejoin:bevel" stroke-miterlimit="7">
+      <path d="M10 10 H50" stroke="#000"/></g>)~");
+  ASSERT_EQ(document.shapes.size(), 1u);
+  EXPECT_EQ(document.shapes[0].lineCap, StrokeCap::Round);
+  EXPECT_EQ(document.shapes[0].lineJoin, StrokeJoin::Bevel);
+  EXPECT_DOUBLE_EQ(document.shapes[0].miterLimit, 7.0);
+}
+
+// A sharp turn (miter length 2.24 × the width): mitered under the default limit 4, cut
+// under a limit of 2.
+TEST(SvgReaderStroke, MiterLimitCutsSharpCorners) {
+  const std::string spike = R"~(<path d="M10 10 L90 50 L10 90" fill="none" stroke="#000" stroke-width="10")~";
+  const double mitered = paintedArea(spike + "/>");
+  const double cut = paintedArea(spike + R"~( stroke-miterlimit="2"/>)~");
+  EXPECT_GT(mitered - cut, 5.0);
+}
+
+// A zero-length subpath (outline icons draw dots as `M4 20h0`): a disc with round caps, a
+// square with square caps, nothing with butt caps.
+TEST(SvgReaderStroke, ZeroLengthSubpathsWithRoundOrSquareCapsAreDots) {
+  const std::string dot = R"~(<path d="M4 20h0" fill="none" stroke="#000" stroke-width="2")~";
+  EXPECT_NEAR(paintedArea(dot + R"~( stroke-linecap="round"/>)~"), kPi, 0.06);  // a polygon in the disc
+  EXPECT_NEAR(paintedArea(dot + R"~( stroke-linecap="square"/>)~"), 4.0, 1e-6);
+  EXPECT_TRUE(read(dot + "/>").shapes.empty());  // butt: nothing to draw
+  // A dot beside a line in one path keeps both.
+  SvgDocument both = read(R"~(<path d="M10 10 H30 M50 50 h0" fill="none" stroke="#000" stroke-linecap="round"/>)~");
+  ASSERT_EQ(both.shapes.size(), 1u);
+  EXPECT_EQ(both.shapes[0].subpaths.size(), 2u);
+}
+
 TEST(SvgReaderFillRule, EvenOddMakesHolesNonZeroDoesNot) {
   const std::string squares = "M0 0 H10 V10 H0 Z M3 3 H7 V7 H3 Z";  // same winding
   SvgDocument nonzero = read(R"~(<path fill-rule="nonzero" d=")~" + squares + R"~("/>)~");
