@@ -58,6 +58,13 @@ std::string lowerCased(std::string text) {
   return text;
 }
 
+std::string trimmedView(std::string_view text) {
+  std::size_t begin = 0, end = text.size();
+  while (begin < end && std::isspace(static_cast<unsigned char>(text[begin]))) ++begin;
+  while (end > begin && std::isspace(static_cast<unsigned char>(text[end - 1]))) --end;
+  return std::string(text.substr(begin, end - begin));
+}
+
 // A group's layer name: lower-cased; Illustrator's de-duplicating suffix ("container_1_")
 // is dropped when what remains is a Pak layer name.
 std::string layerName(const std::string& raw) {
@@ -352,6 +359,43 @@ std::string inkscapeLabel(const XmlNode* node) {
   return {};
 }
 
+// A presentation property as the element gives it: its style="…" declaration (stylesheets
+// already folded in) wins over the attribute; "" when it has neither.
+std::string propertyOf(const XmlNode* node, std::string_view name) {
+  std::string value;
+  const std::string style = attributeOf(node, "style");
+  std::size_t from = 0;
+  while (from < style.size()) {
+    std::size_t end = style.find(';', from);
+    if (end == std::string::npos) end = style.size();
+    const std::string_view declaration = std::string_view(style).substr(from, end - from);
+    from = end + 1;
+    const std::size_t colon = declaration.find(':');
+    if (colon == std::string_view::npos) continue;
+    if (lowerCased(trimmedView(declaration.substr(0, colon))) == name) value = trimmedView(declaration.substr(colon + 1));
+  }
+  if (!value.empty()) return value;
+  return trimmedView(attributeOf(node, name));
+}
+
+// Effects Pak does not draw, named so the artist knows what is missing: the property, what
+// Pak does instead. A value of none (or normal, for blending) is no effect.
+struct UnsupportedEffect {
+  const char* property;
+  const char* consequence;
+};
+constexpr UnsupportedEffect kUnsupportedEffects[] = {
+    {"clip-path", "clip-path is not supported; drawn unclipped"},
+    {"mask", "mask is not supported; drawn unmasked"},
+    {"filter", "filter is not supported; drawn without it"},
+    {"marker", "markers are not supported; not drawn"},
+    {"marker-start", "markers are not supported; not drawn"},
+    {"marker-mid", "markers are not supported; not drawn"},
+    {"marker-end", "markers are not supported; not drawn"},
+    {"mix-blend-mode", "mix-blend-mode is not supported; blended normally"},
+    {"stroke-dasharray", "stroke-dasharray is not applied; the stroke is drawn solid"},
+};
+
 class NodeContext {
  public:
   using length_factory_type = svgpp::factory::length::unitless<>;
@@ -398,6 +442,7 @@ class NodeContext {
   const length_factory_type& length_factory() const { return state_->lengths; }
   void on_exit_element() {
     if (fixedLayer_ && !hidden() && !nonRendered_) state_->fixedLayers.push_back({node_, ctm(), inheritedOpacity_});
+    if (!hidden() && !nonRendered_) warnUnsupportedEffects();
   }
   template <class Range>
   void set_text(const Range&) {}
@@ -529,6 +574,17 @@ class NodeContext {
     std::string text = "<" + tag_;
     if (!id_.empty()) text += " id=\"" + id_ + "\"";
     return text + ">";
+  }
+  // One warning per effect the element asks for and Pak does not draw.
+  void warnUnsupportedEffects() const {
+    for (const UnsupportedEffect& effect : kUnsupportedEffects) {
+      const std::string value = propertyOf(node_, effect.property);
+      const std::string lower = lowerCased(value);
+      if (value.empty() || lower == "none" || lower == "inherit" || lower == "initial" ||
+          (std::string_view(effect.property) == "mix-blend-mode" && lower == "normal"))
+        continue;
+      state_->warn(describe(), std::string(effect.property) + "=\"" + value + "\": " + effect.consequence);
+    }
   }
   // Where an error in this element is: file, line and the element.
   std::string place() const { return state_->placeOf(node_, describe()); }
@@ -664,6 +720,7 @@ class ShapeContext : public NodeContext {
 
   void on_exit_element() {
     if (hidden() || nonRendered_ || !style_.visible || subpaths_.empty()) return;
+    warnUnsupportedEffects();
     PendingShape pending;
     pending.description = describe();
     const Affine m = ctm();

@@ -168,4 +168,15 @@ TEST(CliInspect, HelpExplainsEveryOption) {
   EXPECT_NE(run.out.find("default"), std::string::npos);
 }
 
+// Each effect Pak does not draw is named in the report (tests/svg/unsupported-effects.svg has
+// one of each).
+TEST(CliInspect, NamesEveryUndrawnEffect) {
+  PakRun run = runPak("inspect tests/svg/unsupported-effects.svg");
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  for (const char* name : {"mask=", "filter=", "mix-blend-mode=", "marker-end=", "stroke-dasharray=",
+                           "<text> is not supported", "<image> is not supported"})
+    EXPECT_NE(run.out.find(name), std::string::npos) << name << "\n" << run.out;
+  EXPECT_EQ(run.out.find("warnings: none"), std::string::npos) << run.out;
+}
+
 }  // namespace

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -476,6 +477,38 @@ TEST(SvgReaderStroke, ZeroLengthSubpathsWithRoundOrSquareCapsAreDots) {
   SvgDocument both = read(R"~(<path d="M10 10 H30 M50 50 h0" fill="none" stroke="#000" stroke-linecap="round"/>)~");
   ASSERT_EQ(both.shapes.size(), 1u);
   EXPECT_EQ(both.shapes[0].subpaths.size(), 2u);
+}
+
+// Effects Pak does not draw each give a warning naming the property, on shapes and on
+// groups, from attributes and from style; none (or normal) is no effect; hidden or defined
+// things do not warn.
+TEST(SvgReaderVisibility, UndrawnEffectsGiveNamedWarnings) {
+  SvgDocument document = read(R"~(<defs><rect id="inDefs" width="1" height="1" filter="url(#f)"/></defs>
+      <rect id="masked" width="10" height="10" mask="url(#m)"/>
+      <g id="blurred" style="filter: url(#f)"><rect width="1" height="1"/></g>
+      <path id="arrow" d="M0 0 H10" stroke="#000" marker-start="url(#a)" marker-mid="url(#a)" style="marker-end:url(#a)"/>
+      <rect id="blended" width="1" height="1" style="mix-blend-mode:multiply"/>
+      <path id="dashed" d="M0 0 H10" stroke="#000" stroke-dasharray="4 2"/>
+      <rect id="plain" width="1" height="1" mask="none" stroke-dasharray="none" style="mix-blend-mode:normal"/>
+      <rect id="hidden" width="1" height="1" mask="url(#m)" display="none"/>)~");
+  std::vector<std::string> named;
+  for (const Warning& warning : document.warnings) named.push_back(warning.where + " | " + warning.message);
+  auto has = [&](const std::string& where, const std::string& property) {
+    return std::count_if(named.begin(), named.end(), [&](const std::string& line) {
+      return line.find(where) != std::string::npos && line.find("| " + property + "=") != std::string::npos;
+    });
+  };
+  EXPECT_EQ(has("id=\"masked\"", "mask"), 1);
+  EXPECT_EQ(has("id=\"blurred\"", "filter"), 1);
+  EXPECT_EQ(has("id=\"arrow\"", "marker-start"), 1);
+  EXPECT_EQ(has("id=\"arrow\"", "marker-mid"), 1);
+  EXPECT_EQ(has("id=\"arrow\"", "marker-end"), 1);
+  EXPECT_EQ(has("id=\"blended\"", "mix-blend-mode"), 1);
+  EXPECT_EQ(has("id=\"dashed\"", "stroke-dasharray"), 1);
+  EXPECT_EQ(has("plain", ""), 0);
+  EXPECT_EQ(has("hidden", ""), 0);
+  EXPECT_EQ(has("inDefs", ""), 0);
+  EXPECT_EQ(named.size(), 7u) << ::testing::PrintToString(named);
 }
 
 TEST(SvgReaderFillRule, EvenOddMakesHolesNonZeroDoesNot) {
