@@ -1196,6 +1196,138 @@ void roundRgbComponents(rapidxml_ns::xml_document<char>& xml, XmlNode* root) {
   });
 }
 
+// ---------------------------------------------------------------------------------------
+// <use>, expanded as SVG defines it: the <use> becomes a <g> with its attributes, its
+// transform followed by translate(x, y), holding a copy of the referenced element (a
+// <symbol> copied as a <g>). The copy inherits from the <use>, not from where the original
+// is, and is drawn even when the original sits in <defs>. Uses inside a copy are expanded in
+// turn; a reference to the use's own ancestor (a cycle), nesting beyond kMaxUseDepth or more
+// than kMaxUseCopies copied elements is a warning and draws nothing.
+constexpr int kMaxUseDepth = 32;
+constexpr std::size_t kMaxUseCopies = 20000;
+
+// href="#id" or xlink:href="#id" (the copies' attributes lose their namespace: match the name).
+std::string useReference(const XmlNode* node) {
+  for (auto* a = node->first_attribute(); a; a = a->next_attribute()) {
+    const std::string_view name(a->name(), a->name_size());
+    const std::string_view local(a->local_name(), a->local_name_size());
+    if (name == "href" || name == "xlink:href" || local == "href") return std::string(a->value(), a->value_size());
+  }
+  return {};
+}
+
+// A deep copy keeping the namespaces (rapidxml's clone_node drops them), names and values
+// shared with the source.
+XmlNode* copyElement(rapidxml_ns::xml_document<char>& xml, const XmlNode* source, std::size_t& copies) {
+  XmlNode* copy = xml.allocate_node(source->type());
+  copy->qname(source->name(), source->name_size(), source->local_name());
+  copy->namespace_uri(source->namespace_uri(), source->namespace_uri_size());
+  copy->value(source->value(), source->value_size());
+  ++copies;
+  for (auto* a = source->first_attribute(); a; a = a->next_attribute()) {
+    auto* attribute = xml.allocate_attribute(a->name(), a->value(), a->name_size(), a->value_size());
+    attribute->qname(a->name(), a->name_size(), a->local_name());
+    attribute->namespace_uri(a->namespace_uri(), a->namespace_uri_size());
+    copy->append_attribute(attribute);
+  }
+  for (const XmlNode* child = source->first_node(); child; child = child->next_sibling())
+    copy->append_node(copyElement(xml, child, copies));
+  return copy;
+}
+
+double useCoordinate(const XmlNode* node, std::string_view name) {
+  const std::string text = attributeOf(node, name);
+  if (text.empty()) return 0.0;
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  return std::isfinite(value) && std::abs(value) <= kAbsurdCoordinate ? value : 0.0;
+}
+
+void expandUses(rapidxml_ns::xml_document<char>& xml, XmlNode* root, ReaderState& state, const LineIndex& lines) {
+  std::map<std::string, const XmlNode*> byId;
+  std::vector<std::pair<XmlNode*, int>> pending;  // a <use> and how deep in copies it is
+  forEachElement(root, [&](XmlNode* node) {
+    const std::string id = attributeOf(node, "id");
+    if (!id.empty()) byId.emplace(id, node);
+    if (std::string_view(node->local_name(), node->local_name_size()) == "use") pending.push_back({node, 0});
+  });
+  std::size_t copies = 0;
+  bool overBudget = false;
+  for (std::size_t next = 0; next < pending.size(); ++next) {
+    auto [use, depth] = pending[next];
+    const std::string id = attributeOf(use, "id");
+    const std::string where = state.placeOf(use, "<use" + (id.empty() ? std::string() : " id=\"" + id + "\"") + ">");
+    auto drop = [&](const std::string& why) {
+      state.document->warnings.push_back({where, why});
+      use->parent()->remove_node(use);
+    };
+    const std::string href = useReference(use);
+    if (href.size() < 2 || href[0] != '#') {
+      drop(href.empty() ? "<use> without href; skipped" : "<use> of \"" + href + "\" (another file) is not supported; skipped");
+      continue;
+    }
+    const std::string target = href.substr(1);
+    auto found = byId.find(target);
+    if (found == byId.end()) {
+      drop("<use> of #" + target + ": no element has that id; skipped");
+      continue;
+    }
+    bool cycle = false;
+    for (const XmlNode* up = use; up && !cycle; up = up->parent())
+      if (up->type() == rapidxml_ns::node_element && attributeOf(up, "id") == target) cycle = true;
+    if (cycle || found->second == use) {
+      drop("<use> of #" + target + " refers to an element that contains it (a cycle); skipped");
+      continue;
+    }
+    if (depth >= kMaxUseDepth) {
+      drop("<use> of #" + target + " is nested more than " + std::to_string(kMaxUseDepth) + " uses deep; skipped");
+      continue;
+    }
+    if (copies > kMaxUseCopies) {  // said once: the rest are skipped silently
+      if (!overBudget)
+        drop("<use> of #" + target + " and those after it: the document's uses copy more than " +
+             std::to_string(kMaxUseCopies) + " elements; skipped");
+      else
+        use->parent()->remove_node(use);
+      overBudget = true;
+      continue;
+    }
+    (void)lines;
+    XmlNode* group = xml.allocate_node(rapidxml_ns::node_element);
+    group->name("g", 1);
+    group->namespace_uri(kSvgNamespace.data(), kSvgNamespace.size());
+    std::string transform = attributeOf(use, "transform");
+    const double x = useCoordinate(use, "x"), y = useCoordinate(use, "y");
+    if (x != 0.0 || y != 0.0) transform += " translate(" + formatNumber(x) + " " + formatNumber(y) + ")";
+    for (auto* a = use->first_attribute(); a; a = a->next_attribute()) {
+      const std::string_view name(a->name(), a->name_size());
+      const std::string_view local(a->local_name(), a->local_name_size());
+      if (name == "x" || name == "y" || name == "width" || name == "height" || name == "transform" || local == "href" ||
+          name == "xlink:href")
+        continue;
+      auto* attribute = xml.allocate_attribute(a->name(), a->value(), a->name_size(), a->value_size());
+      attribute->qname(a->name(), a->name_size(), a->local_name());
+      attribute->namespace_uri(a->namespace_uri(), a->namespace_uri_size());
+      group->append_attribute(attribute);
+    }
+    if (!transform.empty()) {
+      const char* value = xml.allocate_string(transform.c_str(), transform.size());
+      group->append_attribute(xml.allocate_attribute("transform", value, 9, transform.size()));
+    }
+    XmlNode* copy = copyElement(xml, found->second, copies);
+    if (std::string_view(copy->local_name(), copy->local_name_size()) == "symbol") {
+      copy->name("g", 1);
+      copy->namespace_uri(kSvgNamespace.data(), kSvgNamespace.size());
+    }
+    group->append_node(copy);
+    use->parent()->insert_node(use, group);
+    use->parent()->remove_node(use);
+    forEachElement(copy, [&](XmlNode* node) {
+      if (std::string_view(node->local_name(), node->local_name_size()) == "use") pending.push_back({node, depth + 1});
+    });
+  }
+}
+
 std::string parseErrorPlace(const std::vector<char>& buffer, const char* where) {
   if (!where || where < buffer.data() || where > buffer.data() + buffer.size())
     return "";
@@ -1436,6 +1568,7 @@ SvgDocument readSvgString(const std::string& text, const std::string& name, cons
   state.file = name;
   state.lines = &lines;
   state.document = &document;
+  expandUses(xml, root, state, lines);
   state.lengths.set_viewport_size(0, 0);  // no percentages until a viewBox or size is known
   {
     CurrentReaderScope scope(&state);

@@ -179,4 +179,13 @@ TEST(CliInspect, NamesEveryUndrawnEffect) {
   EXPECT_EQ(run.out.find("warnings: none"), std::string::npos) << run.out;
 }
 
+// Every <use> copy is drawn (tests/svg/use-clones.svg: a field, 3 stripes from one rect,
+// 2 studs from a symbol through a group of uses), with nothing skipped.
+TEST(CliInspect, UseClonesAreDrawn) {
+  json report = inspectJson("tests/svg/use-clones.svg");
+  const json& file = report["files"][0];
+  EXPECT_EQ(file["shapes"], 6);
+  EXPECT_TRUE(file["warnings"].empty()) << file["warnings"];
+}
+
 }  // namespace
