@@ -138,6 +138,7 @@ struct Style {
   StrokeCap lineCap = StrokeCap::Butt;
   StrokeJoin lineJoin = StrokeJoin::Miter;
   double miterLimit = 4.0;
+  FillRule clipRule = FillRule::NonZero;
   bool visible = true;
   std::uint32_t color = 0x000000;  // the `color` property, used by currentColor
 };
@@ -156,8 +157,22 @@ struct CurveSubpath {
   bool closed = false;
 };
 
+// A clip-path="url(#id)" on the shape or one of its groups, with the user space it is in
+// (the element's transform, its own included: clipPathUnits="userSpaceOnUse").
+struct ClipUse {
+  std::string id;
+  Affine ctm;
+};
+
+// One shape of a <clipPath>, in the clipPath's coordinates (its own transform applied).
+struct ClipShape {
+  std::vector<CurveSubpath> subpaths;
+  FillRule rule = FillRule::NonZero;  // clip-rule
+};
+
 struct PendingShape {
   SvgShape shape;  // everything but the subpaths and the paint
+  std::vector<ClipUse> clips;
   std::vector<CurveSubpath> subpaths;
   Paint fill, stroke;
   double fillOpacity = 1.0, strokeOpacity = 1.0;
@@ -213,6 +228,8 @@ struct ReaderState {
   svgpp::factory::length::unitless<> lengths;
   std::vector<PendingShape> shapes;
   std::map<std::string, Gradient> gradients;
+  std::map<std::string, std::vector<ClipShape>> clipPaths;  // by id; an empty one clips all away
+  std::set<std::string> boundingBoxClips;                   // clipPathUnits="objectBoundingBox"
   std::string currentElement = "<svg>";  // the element being read, for error messages
   const XmlNode* currentNode = nullptr;
   std::optional<Box> viewBox;
@@ -385,7 +402,6 @@ struct UnsupportedEffect {
   const char* consequence;
 };
 constexpr UnsupportedEffect kUnsupportedEffects[] = {
-    {"clip-path", "clip-path is not supported; drawn unclipped"},
     {"mask", "mask is not supported; drawn unmasked"},
     {"filter", "filter is not supported; drawn without it"},
     {"marker", "markers are not supported; not drawn"},
@@ -421,9 +437,24 @@ class NodeContext {
         topGroup_(parent.topGroup_),
         layerGroup_(parent.layerGroup_),
         elements_(parent.elements_),
-        gap_(parent.gap_) {
+        gap_(parent.gap_),
+        clips_(parent.clips_),
+        clipPathId_(parent.clipPathId_) {
     tag_ = std::string(node->local_name(), node->local_name_size());
     id_ = attributeOf(node, "id");
+    if (!parent.ownClip_.empty()) clips_.push_back({parent.ownClip_, parent.ctm()});
+    ownClip_ = clipReference(propertyOf(node, "clip-path"));
+    if (tag_ == "clipPath") {
+      // Its shapes are in the user space of the element it clips: recorded in its own
+      // coordinates, placed by each use.
+      nonRendered_ = true;
+      clipPathId_ = id_;
+      parentCtm_ = Affine{};
+      ownClip_.clear();
+      clips_.clear();
+      if (!id_.empty()) state_->clipPaths[id_];  // exists, even empty
+      if (attributeOf(node, "clipPathUnits") == "objectBoundingBox") state_->boundingBoxClips.insert(id_);
+    }
     if (std::string own = attributeOf(node, "data-elements"); !own.empty()) elements_ = std::move(own);
     if (std::string own = attributeOf(node, "data-gap"); !own.empty()) gap_ = std::move(own);
     if (tag_ == "defs") nonRendered_ = true;
@@ -556,6 +587,8 @@ class NodeContext {
     if (std::isfinite(v) && v >= 1.0) style_.miterLimit = v;
     else state_->warn(describe(), "ignored stroke-miterlimit " + formatNumber(v) + " (must be at least 1)");
   }
+  void set(tag::attribute::clip_rule, tag::value::nonzero) { style_.clipRule = FillRule::NonZero; }
+  void set(tag::attribute::clip_rule, tag::value::evenodd) { style_.clipRule = FillRule::EvenOdd; }
   void set(tag::attribute::fill_rule, tag::value::nonzero) { style_.fillRule = FillRule::NonZero; }
   void set(tag::attribute::fill_rule, tag::value::evenodd) { style_.fillRule = FillRule::EvenOdd; }
   void set(tag::attribute::display, tag::value::none) { displayNone_ = true; }
@@ -611,6 +644,20 @@ class NodeContext {
   bool fixedLayer_ = false;   // the outermost group of a `fixed` layer
   std::string elements_;      // see SvgShape::elements
   std::string gap_;           // see SvgShape::gap
+  std::vector<ClipUse> clips_;  // clip paths of the ancestors
+  std::string ownClip_;         // this element's clip-path id ("" if none)
+  std::string clipPathId_;      // inside <clipPath id=…>: its id
+
+  // The id of clip-path="url(#id)"; "" for none or anything else.
+  static std::string clipReference(const std::string& value) {
+    const std::size_t open = value.find("url(");
+    if (open == std::string::npos) return {};
+    std::size_t begin = open + 4, end = value.find(')', begin);
+    if (end == std::string::npos) return {};
+    std::string inside = trimmedView(std::string_view(value).substr(begin, end - begin));
+    if (inside.size() >= 2 && (inside.front() == '"' || inside.front() == '\'')) inside = inside.substr(1, inside.size() - 2);
+    return inside.size() > 1 && inside[0] == '#' ? inside.substr(1) : std::string();
+  }
 
  private:
   // The layer of a named group: the nearest ancestor named like a Pak layer wins, else the
@@ -719,9 +766,31 @@ class ShapeContext : public NodeContext {
   void path_exit() {}
 
   void on_exit_element() {
+    if (!clipPathId_.empty()) {
+      // A shape of a <clipPath>: its geometry only (paint does not matter).
+      if (hidden() || !style_.visible || subpaths_.empty()) return;
+      ClipShape clip;
+      clip.rule = style_.clipRule;
+      clip.subpaths = std::move(subpaths_);
+      const Affine m = ctm();
+      for (CurveSubpath& subpath : clip.subpaths) {
+        subpath.start = mapped(m, subpath.start);
+        for (CurveSegment& segment : subpath.segments) {
+          if (segment.cubic) {
+            segment.control1 = mapped(m, segment.control1);
+            segment.control2 = mapped(m, segment.control2);
+          }
+          segment.end = mapped(m, segment.end);
+        }
+      }
+      state_->clipPaths[clipPathId_].push_back(std::move(clip));
+      return;
+    }
     if (hidden() || nonRendered_ || !style_.visible || subpaths_.empty()) return;
     warnUnsupportedEffects();
     PendingShape pending;
+    pending.clips = clips_;
+    if (!ownClip_.empty()) pending.clips.push_back({ownClip_, ctm()});
     pending.description = describe();
     const Affine m = ctm();
     for (CurveSubpath& subpath : subpaths_) {
@@ -904,14 +973,14 @@ using ProcessedElements =
                     tag::element::ellipse, tag::element::line, tag::element::polyline,
                     tag::element::polygon, tag::element::linearGradient, tag::element::radialGradient,
                     tag::element::stop, tag::element::use_, tag::element::text,
-                    tag::element::image>::type;
+                    tag::element::image, tag::element::clipPath>::type;
 
 using StyleAttributes =
     boost::mpl::vector<tag::attribute::transform, tag::attribute::fill, tag::attribute::stroke,
                        tag::attribute::fill_opacity, tag::attribute::stroke_opacity,
                        tag::attribute::opacity, tag::attribute::stroke_width, tag::attribute::fill_rule,
                        tag::attribute::stroke_linecap, tag::attribute::stroke_linejoin,
-                       tag::attribute::stroke_miterlimit, tag::attribute::display, tag::attribute::visibility, tag::attribute::color>;
+                       tag::attribute::stroke_miterlimit, tag::attribute::clip_rule, tag::attribute::display, tag::attribute::visibility, tag::attribute::color>;
 
 using StructureAttributes = boost::mpl::vector<
     boost::mpl::pair<tag::element::svg, tag::attribute::viewBox>,
@@ -1537,6 +1606,87 @@ RawMarkup fixedLayerMarkup(ReaderState& state, const SourceText& source, XmlNode
 
 }  // namespace
 
+// ---------------------------------------------------------------------------------------
+// Clip paths. The region a shape may paint: the intersection of its clip paths and its
+// groups' (each the union of its shapes under their clip-rule, in the user space of the
+// element that references it). nullopt: no clip applies (missing or unsupported, with a
+// warning).
+Region asRegion(const std::vector<ClipShape>& shapes, const Affine& m, double tolerance, const ClipOptions& options) {
+  std::vector<Region> parts;
+  for (const ClipShape& clip : shapes) {
+    std::vector<Ring> rings;
+    for (const CurveSubpath& curves : clip.subpaths) {
+      CurveSubpath placed = curves;
+      placed.start = m.apply(placed.start);
+      for (CurveSegment& segment : placed.segments) {
+        segment.control1 = m.apply(segment.control1);
+        segment.control2 = m.apply(segment.control2);
+        segment.end = m.apply(segment.end);
+      }
+      Subpath subpath = flatten(placed, tolerance);
+      if (subpath.points.size() >= 3) rings.push_back(std::move(subpath.points));
+    }
+    if (!rings.empty()) parts.push_back(regionFromRings(rings, clip.rule, options));
+  }
+  if (parts.empty()) return {};
+  return parts.size() == 1 ? parts.front() : unite(parts, options);
+}
+
+ClipOptions clipOptionsFor(double tolerance) { return ClipOptions{std::max(tolerance * 0.01, 1e-9)}; }
+
+std::optional<Region> clipRegion(ReaderState& state, const PendingShape& pending, double tolerance) {
+  const ClipOptions options = clipOptionsFor(tolerance);
+  std::optional<Region> result;
+  for (const ClipUse& use : pending.clips) {
+    auto found = state.clipPaths.find(use.id);
+    if (found == state.clipPaths.end()) {
+      state.warn(pending.description, "clip-path #" + use.id + ": no <clipPath> has that id; drawn unclipped");
+      continue;
+    }
+    if (state.boundingBoxClips.count(use.id)) {
+      state.warn(pending.description, "clip-path #" + use.id +
+                                          ": clipPathUnits=\"objectBoundingBox\" is not supported; drawn unclipped");
+      continue;
+    }
+    Region region = asRegion(found->second, use.ctm, tolerance, options);
+    result = result ? intersect(*result, region, options) : region;
+  }
+  return result;
+}
+
+void appendRegion(SvgShape& shape, const Region& region) {
+  for (const Polygon& polygon : region) {
+    shape.subpaths.push_back({polygon.outer, true});
+    for (const Ring& hole : polygon.holes) shape.subpaths.push_back({hole, true});
+  }
+}
+
+// The shape cut by the clip: its fill as the clipped filled region; its stroke, when it has
+// one, as a second shape filling the clipped stroke band in the stroke's colour.
+std::vector<SvgShape> clippedShapes(const SvgShape& shape, const Region& clip, double tolerance) {
+  const ClipOptions options = clipOptionsFor(tolerance);
+  std::vector<SvgShape> out;
+  SvgShape base = shape;
+  base.subpaths.clear();
+  base.stroke.reset();
+  base.fillRule = FillRule::EvenOdd;  // disjoint polygons with their holes
+  if (shape.fill) {
+    SvgShape fill = base;
+    appendRegion(fill, intersect(filledRegion(shape, options), clip, options));
+    if (!fill.subpaths.empty()) out.push_back(std::move(fill));
+  }
+  if (shape.stroke && shape.strokeWidth > 0.0) {
+    Shape strokeOnly = shape;
+    strokeOnly.fill.reset();
+    SvgShape stroke = base;
+    stroke.fill = shape.stroke;
+    if (!stroke.id.empty() && shape.fill) stroke.id += "-stroke";  // ids stay unique
+    appendRegion(stroke, intersect(paintedRegion(strokeOnly, options), clip, options));
+    if (!stroke.subpaths.empty()) out.push_back(std::move(stroke));
+  }
+  return out;
+}
+
 SvgDocument readSvgString(const std::string& text, const std::string& name, const SvgReadOptions& options) {
   SvgDocument document;
   document.file = name;
@@ -1625,7 +1775,16 @@ SvgDocument readSvgString(const std::string& text, const std::string& name, cons
     }
     shape.fill = resolvePaint(state, pending.fill, pending.color, pending.fillOpacity, pending.description);
     shape.stroke = resolvePaint(state, pending.stroke, pending.color, pending.strokeOpacity, pending.description);
-    document.shapes.push_back(std::move(shape));
+    if (pending.clips.empty()) {
+      document.shapes.push_back(std::move(shape));
+      continue;
+    }
+    std::optional<Region> clip = clipRegion(state, pending, tolerance);
+    if (!clip) {
+      document.shapes.push_back(std::move(shape));
+      continue;
+    }
+    for (SvgShape& clipped : clippedShapes(shape, *clip, tolerance)) document.shapes.push_back(std::move(clipped));
   }
   return document;
 }

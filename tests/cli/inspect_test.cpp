@@ -188,4 +188,16 @@ TEST(CliInspect, UseClonesAreDrawn) {
   EXPECT_TRUE(file["warnings"].empty()) << file["warnings"];
 }
 
+// clip-path is applied: tests/svg/clipped-square.svg, a 100×100 square seen through a 50×50
+// window, reads as area 2500 as a container and as an element.
+TEST(CliInspect, ClipPathIsApplied) {
+  json report = inspectJson("tests/svg/clipped-square.svg");
+  const json& file = report["files"][0];
+  ASSERT_TRUE(file["scene"].is_object());
+  EXPECT_NEAR(file["scene"]["containerArea"].get<double>(), 2500.0, 1e-6);
+  ASSERT_EQ(file["elements"].size(), 1u);
+  EXPECT_NEAR(file["elements"][0]["area"].get<double>(), 2500.0, 1e-6);
+  EXPECT_TRUE(file["warnings"].empty()) << file["warnings"];
+}
+
 }  // namespace

@@ -589,6 +589,49 @@ TEST(SvgReaderVisibility, UndrawnEffectsGiveNamedWarnings) {
   EXPECT_EQ(named.size(), 7u) << ::testing::PrintToString(named);
 }
 
+// ---- clip-path -----------------------------------------------------------------------------
+
+// A 100×100 square clipped by a 50×50 one keeps only the overlap.
+TEST(SvgReaderClip, ClipPathKeepsTheIntersection) {
+  EXPECT_NEAR(fillArea(R"~(<clipPath id="c"><rect x="25" y="25" width="50" height="50"/></clipPath>
+      <rect width="100" height="100" clip-path="url(#c)"/>)~"), 2500.0, 1e-6);
+}
+
+// On a group, in the group's user space (its transform included), for every shape inside;
+// the clip path's own transform and its shapes' clip-rule apply; style="clip-path:…" works.
+TEST(SvgReaderClip, GroupsTransformsAndClipRule) {
+  SvgDocument document = read(R"~(<defs><clipPath id="half" transform="translate(10 0)">
+        <rect width="10" height="20"/></clipPath>
+      <clipPath id="ring"><path clip-rule="evenodd" d="M0 0 H20 V20 H0 Z M5 5 H15 V15 H5 Z"/></clipPath></defs>
+      <g transform="scale(2)" style="clip-path:url(#half)"><rect width="20" height="20"/><rect y="30" width="20" height="20"/></g>
+      <rect width="20" height="20" clip-path="url('#ring')"/>)~");
+  ASSERT_EQ(document.shapes.size(), 2u);  // the second square lies outside the clip
+  EXPECT_NEAR(area(filledRegion(document.shapes[0])), 4 * 200.0, 1e-6);
+  EXPECT_NEAR(bounds(document.shapes[0]).min.x, 20.0, 1e-9);
+  EXPECT_NEAR(area(filledRegion(document.shapes[1])), 400.0 - 100.0, 1e-6);
+}
+
+// A clipped stroke is cut too: it becomes a filled shape of the stroke's colour.
+TEST(SvgReaderClip, StrokesAreClipped) {
+  SvgDocument document = read(R"~(<clipPath id="left"><rect x="-10" y="-10" width="60" height="120"/></clipPath>
+      <path id="bar" d="M10 50 H90" stroke="#f00" stroke-width="10" fill="#00f" clip-path="url(#left)"/>)~");
+  ASSERT_EQ(document.shapes.size(), 1u);  // the fill of a line has no area
+  EXPECT_FALSE(document.shapes[0].stroke);
+  EXPECT_EQ(document.shapes[0].fill->r, 255);
+  EXPECT_NEAR(area(filledRegion(document.shapes[0])), 40 * 10.0, 1e-6);
+}
+
+// What cannot be applied is a warning and the shape is drawn unclipped.
+TEST(SvgReaderClip, MissingOrBoundingBoxClipsWarn) {
+  SvgDocument document = read(R"~(<clipPath id="box" clipPathUnits="objectBoundingBox"><rect width="0.5" height="0.5"/></clipPath>
+      <rect width="10" height="10" clip-path="url(#nowhere)"/><rect width="10" height="10" clip-path="url(#box)"/>)~");
+  ASSERT_EQ(document.shapes.size(), 2u);
+  EXPECT_NEAR(area(filledRegion(document.shapes[0])), 100.0, 1e-9);
+  EXPECT_NEAR(area(filledRegion(document.shapes[1])), 100.0, 1e-9);
+  EXPECT_EQ(warningsContaining(document, "no <clipPath> has that id"), 1);
+  EXPECT_EQ(warningsContaining(document, "objectBoundingBox"), 1);
+}
+
 TEST(SvgReaderFillRule, EvenOddMakesHolesNonZeroDoesNot) {
   const std::string squares = "M0 0 H10 V10 H0 Z M3 3 H7 V7 H3 Z";  // same winding
   SvgDocument nonzero = read(R"~(<path fill-rule="nonzero" d=")~" + squares + R"~("/>)~");
