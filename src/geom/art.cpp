@@ -5,18 +5,19 @@
 namespace pak {
 namespace {
 
-// The stroke of one subpath: the set of points within `halfWidth` of it. A closed subpath
-// is walked back to its first vertex so the band closes (the Minkowski sum of the ring with
-// a disc, i.e. round joins everywhere).
-Region strokeBand(const Subpath& subpath, double halfWidth, const ClipOptions& options) {
+// The stroke of one subpath: its band of half-width `halfWidth`, with the shape's caps,
+// joins and miter limit (a closed subpath has no caps; a one-point subpath is a dot).
+Region strokeBand(const Shape& shape, const Subpath& subpath, double halfWidth, const ClipOptions& options) {
   if (subpath.points.empty()) return {};
-  Polyline line = subpath.points;
-  if (subpath.closed && line.size() > 2) line.push_back(line.front());
   OffsetOptions offsetOptions;
   offsetOptions.precision = options.precision;
   // Arcs as tight as the grid allows without exploding the vertex count on thin strokes.
   offsetOptions.arcTolerance = std::max(options.precision, halfWidth * 0.01);
-  return offsetPolyline(line, halfWidth, offsetOptions);
+  StrokeStyle style;
+  style.cap = shape.lineCap;
+  style.join = shape.lineJoin;
+  style.miterLimit = shape.miterLimit;
+  return strokeOutline(subpath.points, subpath.closed, halfWidth, style, offsetOptions);
 }
 
 }  // namespace
@@ -36,7 +37,7 @@ Region paintedRegion(const Shape& shape, const ClipOptions& options) {
   if (shape.fill) parts.push_back(filledRegion(shape, options));
   if (shape.stroke && shape.strokeWidth > 0.0) {
     for (const Subpath& subpath : shape.subpaths)
-      parts.push_back(strokeBand(subpath, 0.5 * shape.strokeWidth, options));
+      parts.push_back(strokeBand(shape, subpath, 0.5 * shape.strokeWidth, options));
   }
   if (parts.empty()) return {};
   if (parts.size() == 1) return parts.front();

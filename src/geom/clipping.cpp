@@ -172,3 +172,50 @@ Region offsetPolyline(const Polyline& line, double delta, const OffsetOptions& o
 }
 
 }  // namespace pak
+
+namespace pak {
+
+Region strokeOutline(const Polyline& line, bool closed, double delta, const StrokeStyle& style,
+                     const OffsetOptions& options) {
+  checkOffsetOptions(delta, options);
+  if (line.empty() || delta <= 0.0) return {};
+  const double scale = scaleFor(options.precision);
+  cl::Path path;
+  path.reserve(line.size());
+  for (Vec2 p : line) {
+    const cl::IntPoint q = toInt(p, scale);
+    if (path.empty() || !(path.back() == q)) path.push_back(q);
+  }
+  if (closed && path.size() > 1 && path.front() == path.back()) path.pop_back();
+  // A zero-length subpath: SVG draws a dot for round and square caps, nothing for butt ones
+  // (the square is axis-aligned: the subpath has no direction).
+  if (path.size() == 1) {
+    if (style.cap == StrokeCap::Butt) return {};
+    const Vec2 c = line.front();
+    if (style.cap == StrokeCap::Square) {
+      Polygon square{{{c.x - delta, c.y - delta}, {c.x + delta, c.y - delta}, {c.x + delta, c.y + delta},
+                      {c.x - delta, c.y + delta}},
+                     {}};
+      normalizeOrientation(square);
+      return {square};
+    }
+    // Round: Clipper turns a one-point path with a round join into a disc.
+    cl::ClipperOffset offsetter(2.0, options.arcTolerance * scale);
+    offsetter.AddPath(path, cl::jtRound, cl::etOpenRound);
+    return runOffset(offsetter, delta, scale);
+  }
+  // Clipper's miter limit is in multiples of delta, the distance SVG's limit bounds too
+  // (miter length / stroke width = distance of the miter tip / half width); below 2 it uses 2.
+  // Clipper has no bevel: its square join cuts the corner at delta, just outside SVG's bevel.
+  const cl::JoinType join = style.join == StrokeJoin::Miter   ? cl::jtMiter
+                            : style.join == StrokeJoin::Bevel ? cl::jtSquare
+                                                              : cl::jtRound;
+  cl::EndType end = cl::etClosedLine;
+  if (!closed || path.size() < 3)
+    end = style.cap == StrokeCap::Butt ? cl::etOpenButt : style.cap == StrokeCap::Square ? cl::etOpenSquare : cl::etOpenRound;
+  cl::ClipperOffset offsetter(std::max(1.0, style.miterLimit), options.arcTolerance * scale);
+  offsetter.AddPath(path, join, end);
+  return runOffset(offsetter, delta, scale);
+}
+
+}  // namespace pak

@@ -57,6 +57,8 @@ void tracePath(cairo_t* context, const Shape& shape) {
     cairo_move_to(context, subpath.points[0].x, subpath.points[0].y);
     for (std::size_t i = 1; i < subpath.points.size(); ++i)
       cairo_line_to(context, subpath.points[i].x, subpath.points[i].y);
+    // A dot: cairo caps a zero-length segment, not a lone move.
+    if (subpath.points.size() == 1 && !subpath.closed) cairo_line_to(context, subpath.points[0].x, subpath.points[0].y);
     if (subpath.closed) cairo_close_path(context);
   }
 }
@@ -83,6 +85,13 @@ void drawShape(cairo_t* context, const Shape& shape) {
   }
   if (strokes) {
     cairo_set_line_width(context, shape.strokeWidth);
+    cairo_set_line_cap(context, shape.lineCap == StrokeCap::Butt    ? CAIRO_LINE_CAP_BUTT
+                                : shape.lineCap == StrokeCap::Square ? CAIRO_LINE_CAP_SQUARE
+                                                                     : CAIRO_LINE_CAP_ROUND);
+    cairo_set_line_join(context, shape.lineJoin == StrokeJoin::Miter   ? CAIRO_LINE_JOIN_MITER
+                                 : shape.lineJoin == StrokeJoin::Bevel ? CAIRO_LINE_JOIN_BEVEL
+                                                                       : CAIRO_LINE_JOIN_ROUND);
+    cairo_set_miter_limit(context, shape.miterLimit);
     setColor(context, *shape.stroke, paintOpacity);
     cairo_stroke(context);
   }

@@ -116,6 +116,7 @@ std::string pathData(const Shape& shape, int precision, double curveTolerance, S
         put(subpath.points[i]);
       }
     }
+    if (subpath.points.size() == 1 && !subpath.closed) d += " h0";  // a dot: drawn by round or square caps
     if (subpath.closed) d += " Z";
   }
   return d;
@@ -200,6 +201,13 @@ void SvgBuilder::writeShape(const DrawnShape& shape, int depth) {
     attribute("stroke", hexColor(*shape.stroke));
     if (shape.stroke->alpha < 1.0) attribute("stroke-opacity", formatOpacity(shape.stroke->alpha));
     attribute("stroke-width", formatNumber(shape.strokeWidth, precision_));
+    // Caps, joins and miter limit when they are not SVG's defaults (butt, miter, 4).
+    if (shape.lineCap != StrokeCap::Butt)
+      attribute("stroke-linecap", shape.lineCap == StrokeCap::Round ? "round" : "square");
+    if (shape.lineJoin != StrokeJoin::Miter)
+      attribute("stroke-linejoin", shape.lineJoin == StrokeJoin::Round ? "round" : "bevel");
+    else if (shape.miterLimit != 4.0)
+      attribute("stroke-miterlimit", formatNumber(shape.miterLimit, precision_));
   }
   if (shape.opacity < 1.0) attribute("opacity", formatOpacity(shape.opacity));
   std::string children = shapeChildren ? shapeChildren(shape, d, depth + 1) : std::string();

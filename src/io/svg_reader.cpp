@@ -58,6 +58,13 @@ std::string lowerCased(std::string text) {
   return text;
 }
 
+std::string trimmedView(std::string_view text) {
+  std::size_t begin = 0, end = text.size();
+  while (begin < end && std::isspace(static_cast<unsigned char>(text[begin]))) ++begin;
+  while (end > begin && std::isspace(static_cast<unsigned char>(text[end - 1]))) --end;
+  return std::string(text.substr(begin, end - begin));
+}
+
 // A group's layer name: lower-cased; Illustrator's de-duplicating suffix ("container_1_")
 // is dropped when what remains is a Pak layer name.
 std::string layerName(const std::string& raw) {
@@ -128,6 +135,10 @@ struct Style {
   double strokeOpacity = 1.0;
   double strokeWidth = 1.0;
   FillRule fillRule = FillRule::NonZero;
+  StrokeCap lineCap = StrokeCap::Butt;
+  StrokeJoin lineJoin = StrokeJoin::Miter;
+  double miterLimit = 4.0;
+  FillRule clipRule = FillRule::NonZero;
   bool visible = true;
   std::uint32_t color = 0x000000;  // the `color` property, used by currentColor
 };
@@ -146,8 +157,22 @@ struct CurveSubpath {
   bool closed = false;
 };
 
+// A clip-path="url(#id)" on the shape or one of its groups, with the user space it is in
+// (the element's transform, its own included: clipPathUnits="userSpaceOnUse").
+struct ClipUse {
+  std::string id;
+  Affine ctm;
+};
+
+// One shape of a <clipPath>, in the clipPath's coordinates (its own transform applied).
+struct ClipShape {
+  std::vector<CurveSubpath> subpaths;
+  FillRule rule = FillRule::NonZero;  // clip-rule
+};
+
 struct PendingShape {
   SvgShape shape;  // everything but the subpaths and the paint
+  std::vector<ClipUse> clips;
   std::vector<CurveSubpath> subpaths;
   Paint fill, stroke;
   double fillOpacity = 1.0, strokeOpacity = 1.0;
@@ -203,6 +228,8 @@ struct ReaderState {
   svgpp::factory::length::unitless<> lengths;
   std::vector<PendingShape> shapes;
   std::map<std::string, Gradient> gradients;
+  std::map<std::string, std::vector<ClipShape>> clipPaths;  // by id; an empty one clips all away
+  std::set<std::string> boundingBoxClips;                   // clipPathUnits="objectBoundingBox"
   std::string currentElement = "<svg>";  // the element being read, for error messages
   const XmlNode* currentNode = nullptr;
   std::optional<Box> viewBox;
@@ -349,6 +376,42 @@ std::string inkscapeLabel(const XmlNode* node) {
   return {};
 }
 
+// A presentation property as the element gives it: its style="…" declaration (stylesheets
+// already folded in) wins over the attribute; "" when it has neither.
+std::string propertyOf(const XmlNode* node, std::string_view name) {
+  std::string value;
+  const std::string style = attributeOf(node, "style");
+  std::size_t from = 0;
+  while (from < style.size()) {
+    std::size_t end = style.find(';', from);
+    if (end == std::string::npos) end = style.size();
+    const std::string_view declaration = std::string_view(style).substr(from, end - from);
+    from = end + 1;
+    const std::size_t colon = declaration.find(':');
+    if (colon == std::string_view::npos) continue;
+    if (lowerCased(trimmedView(declaration.substr(0, colon))) == name) value = trimmedView(declaration.substr(colon + 1));
+  }
+  if (!value.empty()) return value;
+  return trimmedView(attributeOf(node, name));
+}
+
+// Effects Pak does not draw, named so the artist knows what is missing: the property, what
+// Pak does instead. A value of none (or normal, for blending) is no effect.
+struct UnsupportedEffect {
+  const char* property;
+  const char* consequence;
+};
+constexpr UnsupportedEffect kUnsupportedEffects[] = {
+    {"mask", "mask is not supported; drawn unmasked"},
+    {"filter", "filter is not supported; drawn without it"},
+    {"marker", "markers are not supported; not drawn"},
+    {"marker-start", "markers are not supported; not drawn"},
+    {"marker-mid", "markers are not supported; not drawn"},
+    {"marker-end", "markers are not supported; not drawn"},
+    {"mix-blend-mode", "mix-blend-mode is not supported; blended normally"},
+    {"stroke-dasharray", "stroke-dasharray is not applied; the stroke is drawn solid"},
+};
+
 class NodeContext {
  public:
   using length_factory_type = svgpp::factory::length::unitless<>;
@@ -374,9 +437,24 @@ class NodeContext {
         topGroup_(parent.topGroup_),
         layerGroup_(parent.layerGroup_),
         elements_(parent.elements_),
-        gap_(parent.gap_) {
+        gap_(parent.gap_),
+        clips_(parent.clips_),
+        clipPathId_(parent.clipPathId_) {
     tag_ = std::string(node->local_name(), node->local_name_size());
     id_ = attributeOf(node, "id");
+    if (!parent.ownClip_.empty()) clips_.push_back({parent.ownClip_, parent.ctm()});
+    ownClip_ = clipReference(propertyOf(node, "clip-path"));
+    if (tag_ == "clipPath") {
+      // Its shapes are in the user space of the element it clips: recorded in its own
+      // coordinates, placed by each use.
+      nonRendered_ = true;
+      clipPathId_ = id_;
+      parentCtm_ = Affine{};
+      ownClip_.clear();
+      clips_.clear();
+      if (!id_.empty()) state_->clipPaths[id_];  // exists, even empty
+      if (attributeOf(node, "clipPathUnits") == "objectBoundingBox") state_->boundingBoxClips.insert(id_);
+    }
     if (std::string own = attributeOf(node, "data-elements"); !own.empty()) elements_ = std::move(own);
     if (std::string own = attributeOf(node, "data-gap"); !own.empty()) gap_ = std::move(own);
     if (tag_ == "defs") nonRendered_ = true;
@@ -395,6 +473,7 @@ class NodeContext {
   const length_factory_type& length_factory() const { return state_->lengths; }
   void on_exit_element() {
     if (fixedLayer_ && !hidden() && !nonRendered_) state_->fixedLayers.push_back({node_, ctm(), inheritedOpacity_});
+    if (!hidden() && !nonRendered_) warnUnsupportedEffects();
   }
   template <class Range>
   void set_text(const Range&) {}
@@ -497,6 +576,19 @@ class NodeContext {
   void set(tag::attribute::stroke_width, double v) {
     if (std::isfinite(v) && v >= 0) style_.strokeWidth = v;
   }
+  void set(tag::attribute::stroke_linecap, tag::value::butt) { style_.lineCap = StrokeCap::Butt; }
+  void set(tag::attribute::stroke_linecap, tag::value::round) { style_.lineCap = StrokeCap::Round; }
+  void set(tag::attribute::stroke_linecap, tag::value::square) { style_.lineCap = StrokeCap::Square; }
+  void set(tag::attribute::stroke_linejoin, tag::value::miter) { style_.lineJoin = StrokeJoin::Miter; }
+  void set(tag::attribute::stroke_linejoin, tag::value::round) { style_.lineJoin = StrokeJoin::Round; }
+  void set(tag::attribute::stroke_linejoin, tag::value::bevel) { style_.lineJoin = StrokeJoin::Bevel; }
+  // SVG: a miter limit below 1 is an error; the property is then ignored.
+  void set(tag::attribute::stroke_miterlimit, double v) {
+    if (std::isfinite(v) && v >= 1.0) style_.miterLimit = v;
+    else state_->warn(describe(), "ignored stroke-miterlimit " + formatNumber(v) + " (must be at least 1)");
+  }
+  void set(tag::attribute::clip_rule, tag::value::nonzero) { style_.clipRule = FillRule::NonZero; }
+  void set(tag::attribute::clip_rule, tag::value::evenodd) { style_.clipRule = FillRule::EvenOdd; }
   void set(tag::attribute::fill_rule, tag::value::nonzero) { style_.fillRule = FillRule::NonZero; }
   void set(tag::attribute::fill_rule, tag::value::evenodd) { style_.fillRule = FillRule::EvenOdd; }
   void set(tag::attribute::display, tag::value::none) { displayNone_ = true; }
@@ -515,6 +607,17 @@ class NodeContext {
     std::string text = "<" + tag_;
     if (!id_.empty()) text += " id=\"" + id_ + "\"";
     return text + ">";
+  }
+  // One warning per effect the element asks for and Pak does not draw.
+  void warnUnsupportedEffects() const {
+    for (const UnsupportedEffect& effect : kUnsupportedEffects) {
+      const std::string value = propertyOf(node_, effect.property);
+      const std::string lower = lowerCased(value);
+      if (value.empty() || lower == "none" || lower == "inherit" || lower == "initial" ||
+          (std::string_view(effect.property) == "mix-blend-mode" && lower == "normal"))
+        continue;
+      state_->warn(describe(), std::string(effect.property) + "=\"" + value + "\": " + effect.consequence);
+    }
   }
   // Where an error in this element is: file, line and the element.
   std::string place() const { return state_->placeOf(node_, describe()); }
@@ -541,6 +644,20 @@ class NodeContext {
   bool fixedLayer_ = false;   // the outermost group of a `fixed` layer
   std::string elements_;      // see SvgShape::elements
   std::string gap_;           // see SvgShape::gap
+  std::vector<ClipUse> clips_;  // clip paths of the ancestors
+  std::string ownClip_;         // this element's clip-path id ("" if none)
+  std::string clipPathId_;      // inside <clipPath id=…>: its id
+
+  // The id of clip-path="url(#id)"; "" for none or anything else.
+  static std::string clipReference(const std::string& value) {
+    const std::size_t open = value.find("url(");
+    if (open == std::string::npos) return {};
+    std::size_t begin = open + 4, end = value.find(')', begin);
+    if (end == std::string::npos) return {};
+    std::string inside = trimmedView(std::string_view(value).substr(begin, end - begin));
+    if (inside.size() >= 2 && (inside.front() == '"' || inside.front() == '\'')) inside = inside.substr(1, inside.size() - 2);
+    return inside.size() > 1 && inside[0] == '#' ? inside.substr(1) : std::string();
+  }
 
  private:
   // The layer of a named group: the nearest ancestor named like a Pak layer wins, else the
@@ -649,8 +766,31 @@ class ShapeContext : public NodeContext {
   void path_exit() {}
 
   void on_exit_element() {
+    if (!clipPathId_.empty()) {
+      // A shape of a <clipPath>: its geometry only (paint does not matter).
+      if (hidden() || !style_.visible || subpaths_.empty()) return;
+      ClipShape clip;
+      clip.rule = style_.clipRule;
+      clip.subpaths = std::move(subpaths_);
+      const Affine m = ctm();
+      for (CurveSubpath& subpath : clip.subpaths) {
+        subpath.start = mapped(m, subpath.start);
+        for (CurveSegment& segment : subpath.segments) {
+          if (segment.cubic) {
+            segment.control1 = mapped(m, segment.control1);
+            segment.control2 = mapped(m, segment.control2);
+          }
+          segment.end = mapped(m, segment.end);
+        }
+      }
+      state_->clipPaths[clipPathId_].push_back(std::move(clip));
+      return;
+    }
     if (hidden() || nonRendered_ || !style_.visible || subpaths_.empty()) return;
+    warnUnsupportedEffects();
     PendingShape pending;
+    pending.clips = clips_;
+    if (!ownClip_.empty()) pending.clips.push_back({ownClip_, ctm()});
     pending.description = describe();
     const Affine m = ctm();
     for (CurveSubpath& subpath : subpaths_) {
@@ -668,6 +808,9 @@ class ShapeContext : public NodeContext {
     shape.strokeWidth = style_.strokeWidth * m.lengthScale();
     shape.opacity = effectiveOpacity();
     shape.fillRule = style_.fillRule;
+    shape.lineCap = style_.lineCap;
+    shape.lineJoin = style_.lineJoin;
+    shape.miterLimit = style_.miterLimit;
     shape.id = id_;
     shape.tag = tag_;
     shape.line = state_->lines->lineOf(node_);
@@ -830,13 +973,14 @@ using ProcessedElements =
                     tag::element::ellipse, tag::element::line, tag::element::polyline,
                     tag::element::polygon, tag::element::linearGradient, tag::element::radialGradient,
                     tag::element::stop, tag::element::use_, tag::element::text,
-                    tag::element::image>::type;
+                    tag::element::image, tag::element::clipPath>::type;
 
 using StyleAttributes =
     boost::mpl::vector<tag::attribute::transform, tag::attribute::fill, tag::attribute::stroke,
                        tag::attribute::fill_opacity, tag::attribute::stroke_opacity,
                        tag::attribute::opacity, tag::attribute::stroke_width, tag::attribute::fill_rule,
-                       tag::attribute::display, tag::attribute::visibility, tag::attribute::color>;
+                       tag::attribute::stroke_linecap, tag::attribute::stroke_linejoin,
+                       tag::attribute::stroke_miterlimit, tag::attribute::clip_rule, tag::attribute::display, tag::attribute::visibility, tag::attribute::color>;
 
 using StructureAttributes = boost::mpl::vector<
     boost::mpl::pair<tag::element::svg, tag::attribute::viewBox>,
@@ -1121,6 +1265,138 @@ void roundRgbComponents(rapidxml_ns::xml_document<char>& xml, XmlNode* root) {
   });
 }
 
+// ---------------------------------------------------------------------------------------
+// <use>, expanded as SVG defines it: the <use> becomes a <g> with its attributes, its
+// transform followed by translate(x, y), holding a copy of the referenced element (a
+// <symbol> copied as a <g>). The copy inherits from the <use>, not from where the original
+// is, and is drawn even when the original sits in <defs>. Uses inside a copy are expanded in
+// turn; a reference to the use's own ancestor (a cycle), nesting beyond kMaxUseDepth or more
+// than kMaxUseCopies copied elements is a warning and draws nothing.
+constexpr int kMaxUseDepth = 32;
+constexpr std::size_t kMaxUseCopies = 20000;
+
+// href="#id" or xlink:href="#id" (the copies' attributes lose their namespace: match the name).
+std::string useReference(const XmlNode* node) {
+  for (auto* a = node->first_attribute(); a; a = a->next_attribute()) {
+    const std::string_view name(a->name(), a->name_size());
+    const std::string_view local(a->local_name(), a->local_name_size());
+    if (name == "href" || name == "xlink:href" || local == "href") return std::string(a->value(), a->value_size());
+  }
+  return {};
+}
+
+// A deep copy keeping the namespaces (rapidxml's clone_node drops them), names and values
+// shared with the source.
+XmlNode* copyElement(rapidxml_ns::xml_document<char>& xml, const XmlNode* source, std::size_t& copies) {
+  XmlNode* copy = xml.allocate_node(source->type());
+  copy->qname(source->name(), source->name_size(), source->local_name());
+  copy->namespace_uri(source->namespace_uri(), source->namespace_uri_size());
+  copy->value(source->value(), source->value_size());
+  ++copies;
+  for (auto* a = source->first_attribute(); a; a = a->next_attribute()) {
+    auto* attribute = xml.allocate_attribute(a->name(), a->value(), a->name_size(), a->value_size());
+    attribute->qname(a->name(), a->name_size(), a->local_name());
+    attribute->namespace_uri(a->namespace_uri(), a->namespace_uri_size());
+    copy->append_attribute(attribute);
+  }
+  for (const XmlNode* child = source->first_node(); child; child = child->next_sibling())
+    copy->append_node(copyElement(xml, child, copies));
+  return copy;
+}
+
+double useCoordinate(const XmlNode* node, std::string_view name) {
+  const std::string text = attributeOf(node, name);
+  if (text.empty()) return 0.0;
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  return std::isfinite(value) && std::abs(value) <= kAbsurdCoordinate ? value : 0.0;
+}
+
+void expandUses(rapidxml_ns::xml_document<char>& xml, XmlNode* root, ReaderState& state, const LineIndex& lines) {
+  std::map<std::string, const XmlNode*> byId;
+  std::vector<std::pair<XmlNode*, int>> pending;  // a <use> and how deep in copies it is
+  forEachElement(root, [&](XmlNode* node) {
+    const std::string id = attributeOf(node, "id");
+    if (!id.empty()) byId.emplace(id, node);
+    if (std::string_view(node->local_name(), node->local_name_size()) == "use") pending.push_back({node, 0});
+  });
+  std::size_t copies = 0;
+  bool overBudget = false;
+  for (std::size_t next = 0; next < pending.size(); ++next) {
+    auto [use, depth] = pending[next];
+    const std::string id = attributeOf(use, "id");
+    const std::string where = state.placeOf(use, "<use" + (id.empty() ? std::string() : " id=\"" + id + "\"") + ">");
+    auto drop = [&](const std::string& why) {
+      state.document->warnings.push_back({where, why});
+      use->parent()->remove_node(use);
+    };
+    const std::string href = useReference(use);
+    if (href.size() < 2 || href[0] != '#') {
+      drop(href.empty() ? "<use> without href; skipped" : "<use> of \"" + href + "\" (another file) is not supported; skipped");
+      continue;
+    }
+    const std::string target = href.substr(1);
+    auto found = byId.find(target);
+    if (found == byId.end()) {
+      drop("<use> of #" + target + ": no element has that id; skipped");
+      continue;
+    }
+    bool cycle = false;
+    for (const XmlNode* up = use; up && !cycle; up = up->parent())
+      if (up->type() == rapidxml_ns::node_element && attributeOf(up, "id") == target) cycle = true;
+    if (cycle || found->second == use) {
+      drop("<use> of #" + target + " refers to an element that contains it (a cycle); skipped");
+      continue;
+    }
+    if (depth >= kMaxUseDepth) {
+      drop("<use> of #" + target + " is nested more than " + std::to_string(kMaxUseDepth) + " uses deep; skipped");
+      continue;
+    }
+    if (copies > kMaxUseCopies) {  // said once: the rest are skipped silently
+      if (!overBudget)
+        drop("<use> of #" + target + " and those after it: the document's uses copy more than " +
+             std::to_string(kMaxUseCopies) + " elements; skipped");
+      else
+        use->parent()->remove_node(use);
+      overBudget = true;
+      continue;
+    }
+    (void)lines;
+    XmlNode* group = xml.allocate_node(rapidxml_ns::node_element);
+    group->name("g", 1);
+    group->namespace_uri(kSvgNamespace.data(), kSvgNamespace.size());
+    std::string transform = attributeOf(use, "transform");
+    const double x = useCoordinate(use, "x"), y = useCoordinate(use, "y");
+    if (x != 0.0 || y != 0.0) transform += " translate(" + formatNumber(x) + " " + formatNumber(y) + ")";
+    for (auto* a = use->first_attribute(); a; a = a->next_attribute()) {
+      const std::string_view name(a->name(), a->name_size());
+      const std::string_view local(a->local_name(), a->local_name_size());
+      if (name == "x" || name == "y" || name == "width" || name == "height" || name == "transform" || local == "href" ||
+          name == "xlink:href")
+        continue;
+      auto* attribute = xml.allocate_attribute(a->name(), a->value(), a->name_size(), a->value_size());
+      attribute->qname(a->name(), a->name_size(), a->local_name());
+      attribute->namespace_uri(a->namespace_uri(), a->namespace_uri_size());
+      group->append_attribute(attribute);
+    }
+    if (!transform.empty()) {
+      const char* value = xml.allocate_string(transform.c_str(), transform.size());
+      group->append_attribute(xml.allocate_attribute("transform", value, 9, transform.size()));
+    }
+    XmlNode* copy = copyElement(xml, found->second, copies);
+    if (std::string_view(copy->local_name(), copy->local_name_size()) == "symbol") {
+      copy->name("g", 1);
+      copy->namespace_uri(kSvgNamespace.data(), kSvgNamespace.size());
+    }
+    group->append_node(copy);
+    use->parent()->insert_node(use, group);
+    use->parent()->remove_node(use);
+    forEachElement(copy, [&](XmlNode* node) {
+      if (std::string_view(node->local_name(), node->local_name_size()) == "use") pending.push_back({node, depth + 1});
+    });
+  }
+}
+
 std::string parseErrorPlace(const std::vector<char>& buffer, const char* where) {
   if (!where || where < buffer.data() || where > buffer.data() + buffer.size())
     return "";
@@ -1330,6 +1606,87 @@ RawMarkup fixedLayerMarkup(ReaderState& state, const SourceText& source, XmlNode
 
 }  // namespace
 
+// ---------------------------------------------------------------------------------------
+// Clip paths. The region a shape may paint: the intersection of its clip paths and its
+// groups' (each the union of its shapes under their clip-rule, in the user space of the
+// element that references it). nullopt: no clip applies (missing or unsupported, with a
+// warning).
+Region asRegion(const std::vector<ClipShape>& shapes, const Affine& m, double tolerance, const ClipOptions& options) {
+  std::vector<Region> parts;
+  for (const ClipShape& clip : shapes) {
+    std::vector<Ring> rings;
+    for (const CurveSubpath& curves : clip.subpaths) {
+      CurveSubpath placed = curves;
+      placed.start = m.apply(placed.start);
+      for (CurveSegment& segment : placed.segments) {
+        segment.control1 = m.apply(segment.control1);
+        segment.control2 = m.apply(segment.control2);
+        segment.end = m.apply(segment.end);
+      }
+      Subpath subpath = flatten(placed, tolerance);
+      if (subpath.points.size() >= 3) rings.push_back(std::move(subpath.points));
+    }
+    if (!rings.empty()) parts.push_back(regionFromRings(rings, clip.rule, options));
+  }
+  if (parts.empty()) return {};
+  return parts.size() == 1 ? parts.front() : unite(parts, options);
+}
+
+ClipOptions clipOptionsFor(double tolerance) { return ClipOptions{std::max(tolerance * 0.01, 1e-9)}; }
+
+std::optional<Region> clipRegion(ReaderState& state, const PendingShape& pending, double tolerance) {
+  const ClipOptions options = clipOptionsFor(tolerance);
+  std::optional<Region> result;
+  for (const ClipUse& use : pending.clips) {
+    auto found = state.clipPaths.find(use.id);
+    if (found == state.clipPaths.end()) {
+      state.warn(pending.description, "clip-path #" + use.id + ": no <clipPath> has that id; drawn unclipped");
+      continue;
+    }
+    if (state.boundingBoxClips.count(use.id)) {
+      state.warn(pending.description, "clip-path #" + use.id +
+                                          ": clipPathUnits=\"objectBoundingBox\" is not supported; drawn unclipped");
+      continue;
+    }
+    Region region = asRegion(found->second, use.ctm, tolerance, options);
+    result = result ? intersect(*result, region, options) : region;
+  }
+  return result;
+}
+
+void appendRegion(SvgShape& shape, const Region& region) {
+  for (const Polygon& polygon : region) {
+    shape.subpaths.push_back({polygon.outer, true});
+    for (const Ring& hole : polygon.holes) shape.subpaths.push_back({hole, true});
+  }
+}
+
+// The shape cut by the clip: its fill as the clipped filled region; its stroke, when it has
+// one, as a second shape filling the clipped stroke band in the stroke's colour.
+std::vector<SvgShape> clippedShapes(const SvgShape& shape, const Region& clip, double tolerance) {
+  const ClipOptions options = clipOptionsFor(tolerance);
+  std::vector<SvgShape> out;
+  SvgShape base = shape;
+  base.subpaths.clear();
+  base.stroke.reset();
+  base.fillRule = FillRule::EvenOdd;  // disjoint polygons with their holes
+  if (shape.fill) {
+    SvgShape fill = base;
+    appendRegion(fill, intersect(filledRegion(shape, options), clip, options));
+    if (!fill.subpaths.empty()) out.push_back(std::move(fill));
+  }
+  if (shape.stroke && shape.strokeWidth > 0.0) {
+    Shape strokeOnly = shape;
+    strokeOnly.fill.reset();
+    SvgShape stroke = base;
+    stroke.fill = shape.stroke;
+    if (!stroke.id.empty() && shape.fill) stroke.id += "-stroke";  // ids stay unique
+    appendRegion(stroke, intersect(paintedRegion(strokeOnly, options), clip, options));
+    if (!stroke.subpaths.empty()) out.push_back(std::move(stroke));
+  }
+  return out;
+}
+
 SvgDocument readSvgString(const std::string& text, const std::string& name, const SvgReadOptions& options) {
   SvgDocument document;
   document.file = name;
@@ -1361,6 +1718,7 @@ SvgDocument readSvgString(const std::string& text, const std::string& name, cons
   state.file = name;
   state.lines = &lines;
   state.document = &document;
+  expandUses(xml, root, state, lines);
   state.lengths.set_viewport_size(0, 0);  // no percentages until a viewBox or size is known
   {
     CurrentReaderScope scope(&state);
@@ -1401,9 +1759,15 @@ SvgDocument readSvgString(const std::string& text, const std::string& name, cons
 
   for (PendingShape& pending : state.shapes) {
     SvgShape shape = std::move(pending.shape);
+    // A zero-length subpath (`M4 20h0`, a dot in outline icons) is painted by round and
+    // square caps; it is kept as one point.
+    const bool strokesDots = pending.stroke.solid.kind != PaintKind::None || !pending.stroke.server.empty();
+    const bool dots = strokesDots && shape.strokeWidth > 0.0 && shape.lineCap != StrokeCap::Butt;
     for (const CurveSubpath& curves : pending.subpaths) {
       Subpath subpath = flatten(curves, tolerance);
-      if (subpath.points.size() >= 2) shape.subpaths.push_back(std::move(subpath));
+      const bool dot = dots && subpath.points.size() == 1 && (!curves.segments.empty() || curves.closed);
+      if (dot) subpath.closed = false;
+      if (subpath.points.size() >= 2 || dot) shape.subpaths.push_back(std::move(subpath));
     }
     if (shape.subpaths.empty()) {
       state.warn(pending.description, "no drawable geometry; skipped");
@@ -1411,7 +1775,16 @@ SvgDocument readSvgString(const std::string& text, const std::string& name, cons
     }
     shape.fill = resolvePaint(state, pending.fill, pending.color, pending.fillOpacity, pending.description);
     shape.stroke = resolvePaint(state, pending.stroke, pending.color, pending.strokeOpacity, pending.description);
-    document.shapes.push_back(std::move(shape));
+    if (pending.clips.empty()) {
+      document.shapes.push_back(std::move(shape));
+      continue;
+    }
+    std::optional<Region> clip = clipRegion(state, pending, tolerance);
+    if (!clip) {
+      document.shapes.push_back(std::move(shape));
+      continue;
+    }
+    for (SvgShape& clipped : clippedShapes(shape, *clip, tolerance)) document.shapes.push_back(std::move(clipped));
   }
   return document;
 }

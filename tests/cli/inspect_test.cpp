@@ -168,4 +168,36 @@ TEST(CliInspect, HelpExplainsEveryOption) {
   EXPECT_NE(run.out.find("default"), std::string::npos);
 }
 
+// Each effect Pak does not draw is named in the report (tests/svg/unsupported-effects.svg has
+// one of each).
+TEST(CliInspect, NamesEveryUndrawnEffect) {
+  PakRun run = runPak("inspect tests/svg/unsupported-effects.svg");
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  for (const char* name : {"mask=", "filter=", "mix-blend-mode=", "marker-end=", "stroke-dasharray=",
+                           "<text> is not supported", "<image> is not supported"})
+    EXPECT_NE(run.out.find(name), std::string::npos) << name << "\n" << run.out;
+  EXPECT_EQ(run.out.find("warnings: none"), std::string::npos) << run.out;
+}
+
+// Every <use> copy is drawn (tests/svg/use-clones.svg: a field, 3 stripes from one rect,
+// 2 studs from a symbol through a group of uses), with nothing skipped.
+TEST(CliInspect, UseClonesAreDrawn) {
+  json report = inspectJson("tests/svg/use-clones.svg");
+  const json& file = report["files"][0];
+  EXPECT_EQ(file["shapes"], 6);
+  EXPECT_TRUE(file["warnings"].empty()) << file["warnings"];
+}
+
+// clip-path is applied: tests/svg/clipped-square.svg, a 100×100 square seen through a 50×50
+// window, reads as area 2500 as a container and as an element.
+TEST(CliInspect, ClipPathIsApplied) {
+  json report = inspectJson("tests/svg/clipped-square.svg");
+  const json& file = report["files"][0];
+  ASSERT_TRUE(file["scene"].is_object());
+  EXPECT_NEAR(file["scene"]["containerArea"].get<double>(), 2500.0, 1e-6);
+  ASSERT_EQ(file["elements"].size(), 1u);
+  EXPECT_NEAR(file["elements"][0]["area"].get<double>(), 2500.0, 1e-6);
+  EXPECT_TRUE(file["warnings"].empty()) << file["warnings"];
+}
+
 }  // namespace

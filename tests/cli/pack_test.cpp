@@ -208,6 +208,20 @@ TEST(CliPack, WarnsAboutSkippedShapesInElementFiles) {
   EXPECT_EQ(count(flow.err, "pak: warning: " + element), 1) << flow.err;
 }
 
+// The named warnings of tests/svg/unsupported-effects.svg reach `pak pack` users too.
+TEST(CliPack, WarnsAboutEveryUndrawnEffect) {
+  ScratchFolder dir("cli-pack-effects");
+  PakRun run = runPak("pack -c examples/scene.svg -e tests/svg/unsupported-effects.svg --count 3 --max-iterations 5 "
+                      "--progress-every 1000 -o " + shellQuoted(dir.file("out.svg")));
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  for (const char* name : {"mask=", "filter=", "mix-blend-mode=", "marker-end=", "stroke-dasharray=",
+                           "<text> is not supported", "<image> is not supported"})
+    EXPECT_NE(run.err.find(name), std::string::npos) << name << "\n" << run.err;
+  for (const std::string& line : run.errLines())
+    if (line.find("tests/svg/unsupported-effects.svg") != std::string::npos)
+      EXPECT_EQ(line.rfind("pak: warning: ", 0), 0u) << line;
+}
+
 // Editable curves by default (issue 17): cubic Béziers fitted within 0.085 canonical units of
 // the deformed outlines, fewer points than the polygons, which --polyline writes as before.
 TEST(CliPack, OutlinesAreCurvesByDefaultAndPolygonsOnRequest) {

@@ -60,7 +60,7 @@ TEST(PackingReader, StrokesCountAsPaintedArt) {
       "<g id='elements'><g class='element'><rect x='10' y='10' width='10' height='10' fill='red' stroke='black' "
       "stroke-width='2'/></g></g>");
   ASSERT_EQ(packing.elements.size(), 1u);
-  EXPECT_NEAR(pak::area(packing.elements[0]), 140.0 + 3.14159265, 0.05);  // 10² + stroke, round joins
+  EXPECT_NEAR(pak::area(packing.elements[0]), 144.0, 0.05);  // 12²: 10² + stroke, miter joins (SVG's default)
   EXPECT_NEAR(pak::area(packing.container), 10000.0, 1e-6);  // the container's own stroke is not area
 }
 

@@ -342,6 +342,51 @@ TEST(SvgWriterRoundTrip, EscapedIdsComeBackUnchanged) {
 
 namespace {
 
+// Stroke caps, joins and the miter limit are written (when not SVG's defaults) and read back;
+// a dot (a one-point subpath) is written as a zero-length segment so round caps draw it.
+TEST(SvgWriterRoundTrip, StrokeCapsJoinsMiterLimitAndDotsComeBack) {
+  pak::Drawing drawing;
+  drawing.viewBox = {{0, 0}, {100, 100}};
+  pak::DrawingGroup group;
+  group.id = "art";
+  pak::DrawnShape corner;
+  corner.subpaths = {{{{10, 10}, {50, 10}, {50, 50}}, false}};
+  corner.stroke = pak::Color{0, 0, 0, 1.0};
+  corner.strokeWidth = 4;
+  corner.lineCap = pak::StrokeCap::Square;
+  corner.lineJoin = pak::StrokeJoin::Bevel;
+  pak::DrawnShape spike = corner;
+  spike.lineCap = pak::StrokeCap::Butt;
+  spike.lineJoin = pak::StrokeJoin::Miter;
+  spike.miterLimit = 9;
+  pak::DrawnShape dot = corner;
+  dot.subpaths = {{{{70, 70}}, false}};
+  dot.lineCap = pak::StrokeCap::Round;
+  group.shapes = {corner, spike, dot};
+  drawing.groups = {group};
+  const std::string svg = pak::toSvgString(drawing);
+  ParsedSvg parsed(svg);
+  auto* first = parsed.root()->first_node("g")->first_node("path");
+  ASSERT_NE(first, nullptr);
+  EXPECT_EQ(attribute(first, "stroke-linecap"), "square");
+  EXPECT_EQ(attribute(first, "stroke-linejoin"), "bevel");
+  auto* second = first->next_sibling("path");
+  EXPECT_EQ(attribute(second, "stroke-linecap"), "<absent>");  // butt: SVG's default
+  EXPECT_EQ(attribute(second, "stroke-miterlimit"), "9");
+
+  pak::SvgDocument back = pak::readSvgString(svg, "caps.svg");
+  ASSERT_EQ(back.shapes.size(), 3u);
+  EXPECT_EQ(back.shapes[0].lineCap, pak::StrokeCap::Square);
+  EXPECT_EQ(back.shapes[0].lineJoin, pak::StrokeJoin::Bevel);
+  EXPECT_EQ(back.shapes[1].lineCap, pak::StrokeCap::Butt);
+  EXPECT_EQ(back.shapes[1].lineJoin, pak::StrokeJoin::Miter);
+  EXPECT_DOUBLE_EQ(back.shapes[1].miterLimit, 9.0);
+  EXPECT_EQ(back.shapes[2].lineCap, pak::StrokeCap::Round);
+  ASSERT_EQ(back.shapes[2].subpaths.size(), 1u);
+  EXPECT_EQ(back.shapes[2].subpaths[0].points.size(), 1u);
+  EXPECT_NEAR(pak::area(pak::paintedRegion(back.shapes[2])), std::acos(-1.0) * 4, 0.25);  // a disc of radius 2 (as a polygon)
+}
+
 TEST(SvgWriter, CurveToleranceWritesCubicBeziersThatReadBackAsTheSameShape) {
   pak::Drawing drawing;
   drawing.viewBox = {{0, 0}, {100, 100}};

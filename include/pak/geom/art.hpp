@@ -29,13 +29,19 @@ struct Shape {
   double strokeWidth = 1.0;      // in the same units as the points
   double opacity = 1.0;          // group/element opacity
   FillRule fillRule = FillRule::NonZero;
+  // Stroke ends, corners and miter limit. Round by default (shapes Pak draws itself, legacy
+  // .path files); the SVG reader sets what the file says, with SVG's defaults (butt, miter, 4).
+  StrokeCap lineCap = StrokeCap::Round;
+  StrokeJoin lineJoin = StrokeJoin::Round;
+  double miterLimit = 4.0;
 };
 
 // The region the shape's fill covers (fill rule applied; open subpaths closed, as SVG does).
 // Geometry only: computed whether or not the shape has a fill paint (fill="none" included).
 Region filledRegion(const Shape& shape, const ClipOptions& = {});
 // Everything the shape paints: its fill (if any), plus its stroke (if any) grown to
-// strokeWidth/2 with round joins and caps.
+// strokeWidth/2 with the shape's caps, joins and miter limit. A zero-length subpath with round
+// or square caps paints a dot, as renderers do.
 Region paintedRegion(const Shape& shape, const ClipOptions& = {});
 // Bounds of the points, grown by strokeWidth/2 when the shape has a stroke.
 Box bounds(const Shape& shape);

@@ -31,4 +31,18 @@ Region offset(const Region& region, double delta, const OffsetOptions& = {});
 // Grows a polyline into a band of half-width `delta` (round caps and joins).
 Region offsetPolyline(const Polyline& line, double delta, const OffsetOptions& = {});
 
+// Stroke geometry for strokeOutline: caps of open polylines and joins (SVG's linecap/linejoin).
+enum class StrokeCap { Butt, Round, Square };
+enum class StrokeJoin { Miter, Round, Bevel };
+struct StrokeStyle {
+  StrokeCap cap = StrokeCap::Round;
+  StrokeJoin join = StrokeJoin::Round;
+  double miterLimit = 4.0;  // SVG's stroke-miterlimit: miter length / stroke width
+};
+// The band of half-width `delta` around a polyline, open or `closed`, with the given caps and
+// joins. A polyline of one point (or all points equal) gives a round or square dot, nothing
+// for butt caps.
+Region strokeOutline(const Polyline& line, bool closed, double delta, const StrokeStyle& style,
+                     const OffsetOptions& = {});
+
 }  // namespace pak
