@@ -772,17 +772,7 @@ class ShapeContext : public NodeContext {
       ClipShape clip;
       clip.rule = style_.clipRule;
       clip.subpaths = std::move(subpaths_);
-      const Affine m = ctm();
-      for (CurveSubpath& subpath : clip.subpaths) {
-        subpath.start = mapped(m, subpath.start);
-        for (CurveSegment& segment : subpath.segments) {
-          if (segment.cubic) {
-            segment.control1 = mapped(m, segment.control1);
-            segment.control2 = mapped(m, segment.control2);
-          }
-          segment.end = mapped(m, segment.end);
-        }
-      }
+      mapAll(ctm(), clip.subpaths);
       state_->clipPaths[clipPathId_].push_back(std::move(clip));
       return;
     }
@@ -793,16 +783,7 @@ class ShapeContext : public NodeContext {
     if (!ownClip_.empty()) pending.clips.push_back({ownClip_, ctm()});
     pending.description = describe();
     const Affine m = ctm();
-    for (CurveSubpath& subpath : subpaths_) {
-      subpath.start = mapped(m, subpath.start);
-      for (CurveSegment& segment : subpath.segments) {
-        if (segment.cubic) {
-          segment.control1 = mapped(m, segment.control1);
-          segment.control2 = mapped(m, segment.control2);
-        }
-        segment.end = mapped(m, segment.end);
-      }
-    }
+    mapAll(m, subpaths_);
     pending.subpaths = std::move(subpaths_);
     SvgShape& shape = pending.shape;
     shape.strokeWidth = style_.strokeWidth * m.lengthScale();
@@ -835,6 +816,20 @@ class ShapeContext : public NodeContext {
       throw InputError(place(), "non-finite coordinate (" + formatNumber(x) +
                                          ", " + formatNumber(y) + ")");
     return {x, y};
+  }
+
+  // Every point of `subpaths` (control points too) through m, checked as `mapped` checks one.
+  void mapAll(const Affine& m, std::vector<CurveSubpath>& subpaths) const {
+    for (CurveSubpath& subpath : subpaths) {
+      subpath.start = mapped(m, subpath.start);
+      for (CurveSegment& segment : subpath.segments) {
+        if (segment.cubic) {
+          segment.control1 = mapped(m, segment.control1);
+          segment.control2 = mapped(m, segment.control2);
+        }
+        segment.end = mapped(m, segment.end);
+      }
+    }
   }
 
   Vec2 mapped(const Affine& m, Vec2 p) const {
