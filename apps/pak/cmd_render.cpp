@@ -8,6 +8,7 @@
 #include <string>
 
 #include "command.hpp"
+#include "output_files.hpp"
 #include "pak/error.hpp"
 #include "pak/io/drawing.hpp"
 #include "pak/io/png_renderer.hpp"
@@ -92,6 +93,7 @@ int runRender(RenderOptions& options, const CLI::App& command) {
   if (options.width < 1) throw InputError("--width", "must be at least 1, got " + std::to_string(options.width));
 
   SvgDocument document = readDocument(options.input);
+  checkOutputsBeforeTheRun({{"-o", options.output}}, {options.input});
   if (document.shapes.empty()) {
     // An empty picture is almost always a mistake (wrong file, everything hidden); say why.
     std::string reason = document.warnings.empty() ? "" : " (first skipped: " + document.warnings.front().message + ")";

@@ -157,8 +157,8 @@ TEST(CliErrors, OptionErrorsNameTheOption) {
   EXPECT_TRUE(fs::is_empty(out.path()));
 }
 
-// Every output is checked before the run: a missing folder, an output that is an input, two
-// outputs in one file. Nothing is written, the inputs are untouched, and no folder the run
+// Every output is checked before the run (render's too): a missing folder, an output that is
+// an input, two outputs in one file. Nothing is written, the inputs are untouched, and no folder the run
 // would have made (snapshots, animate's output) is made.
 TEST(CliErrors, OutputsAreCheckedBeforeTheRun) {
   ScratchFolder out("errors-outputs");
@@ -173,6 +173,7 @@ TEST(CliErrors, OutputsAreCheckedBeforeTheRun) {
       {"pack -c " + shellQuoted(scene) + " -e examples/elements -q -o " + shellQuoted(scene),
        scene + ": -o would overwrite an input of this run"},
       {kPack + "-o " + shellQuoted(o) + " --png " + shellQuoted(o), o + ": given to both -o and --png"},
+      {"render " + shellQuoted(scene) + " -o " + shellQuoted(scene), scene + ": -o would overwrite an input of this run"},
       {kFlow + "-o " + shellQuoted(o) + " --report " + shellQuoted(o), o + ": given to both -o and --report"},
       {kAnimate + "-o " + shellQuoted(frames) + " --report examples/animate/stars/stars.json",
        "examples/animate/stars/stars.json: --report would overwrite an input of this run"},
