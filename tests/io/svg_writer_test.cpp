@@ -12,6 +12,7 @@
 #include <limits>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "pak/error.hpp"
@@ -338,17 +339,20 @@ TEST(SvgWriterRoundTrip, EscapedIdsComeBackUnchanged) {
   EXPECT_NE(findShape(document, "fish & chips <1>"), nullptr);
 }
 
-}  // namespace
-
-namespace {
+// A 100 × 100 drawing with one group of `shapes`.
+pak::Drawing oneGroupDrawing(const std::string& id, std::vector<pak::DrawnShape> shapes) {
+  pak::Drawing drawing;
+  drawing.viewBox = {{0, 0}, {100, 100}};
+  pak::DrawingGroup group;
+  group.id = id;
+  group.shapes = std::move(shapes);
+  drawing.groups = {group};
+  return drawing;
+}
 
 // Stroke caps, joins and the miter limit are written (when not SVG's defaults) and read back;
 // a dot (a one-point subpath) is written as a zero-length segment so round caps draw it.
 TEST(SvgWriterRoundTrip, StrokeCapsJoinsMiterLimitAndDotsComeBack) {
-  pak::Drawing drawing;
-  drawing.viewBox = {{0, 0}, {100, 100}};
-  pak::DrawingGroup group;
-  group.id = "art";
   pak::DrawnShape corner;
   corner.subpaths = {{{{10, 10}, {50, 10}, {50, 50}}, false}};
   corner.stroke = pak::Color{0, 0, 0, 1.0};
@@ -362,9 +366,7 @@ TEST(SvgWriterRoundTrip, StrokeCapsJoinsMiterLimitAndDotsComeBack) {
   pak::DrawnShape dot = corner;
   dot.subpaths = {{{{70, 70}}, false}};
   dot.lineCap = pak::StrokeCap::Round;
-  group.shapes = {corner, spike, dot};
-  drawing.groups = {group};
-  const std::string svg = pak::toSvgString(drawing);
+  const std::string svg = pak::toSvgString(oneGroupDrawing("art", {corner, spike, dot}));
   ParsedSvg parsed(svg);
   auto* first = parsed.root()->first_node("g")->first_node("path");
   ASSERT_NE(first, nullptr);
@@ -388,10 +390,6 @@ TEST(SvgWriterRoundTrip, StrokeCapsJoinsMiterLimitAndDotsComeBack) {
 }
 
 TEST(SvgWriter, CurveToleranceWritesCubicBeziersThatReadBackAsTheSameShape) {
-  pak::Drawing drawing;
-  drawing.viewBox = {{0, 0}, {100, 100}};
-  pak::DrawingGroup group;
-  group.id = "elements";
   pak::DrawnShape disc;
   pak::Subpath ring;
   ring.closed = true;
@@ -399,8 +397,7 @@ TEST(SvgWriter, CurveToleranceWritesCubicBeziersThatReadBackAsTheSameShape) {
     ring.points.push_back({50 + 40 * std::cos(2 * M_PI * k / 400), 50 + 40 * std::sin(2 * M_PI * k / 400)});
   disc.subpaths.push_back(ring);
   disc.fill = pak::Color{10, 20, 30, 1.0};
-  group.shapes.push_back(disc);
-  drawing.groups.push_back(group);
+  const pak::Drawing drawing = oneGroupDrawing("elements", {disc});
   pak::SvgWriteOptions options;
   options.curveTolerance = 0.05;
   std::string svg = pak::toSvgString(drawing, options);
