@@ -27,6 +27,7 @@
 #include "pak/io/packing_reader.hpp"
 #include "pak/io/text_file.hpp"
 #include "pak/metrics/evenness.hpp"
+#include "output_files.hpp"
 #include "report_fields.hpp"
 #include "pak/metrics/metrics.hpp"
 
@@ -241,6 +242,18 @@ int runMetrics(MetricsArgs& args, const CLI::App&) {
     throw InputError(args.distanceMap, "--distance-map must be a .png file");
   if (!args.evennessMap.empty() && extensionOf(args.evennessMap) != ".png")
     throw InputError(args.evennessMap, "--evenness-map must be a .png file");
+
+  // Every file it will write, as numbered for several packings: none may be a packing it
+  // reads (`--json` onto the packing replaced it), the report, or another output.
+  std::vector<PlannedOutput> outputs{{"--csv", args.csv}, {"--json", args.json}, {"--plot", args.plot}};
+  const std::size_t count = args.files.size();
+  for (auto [option, path] : {std::pair{"--visualize-out", &args.visualizeOut}, std::pair{"--distance-map", &args.distanceMap},
+                              std::pair{"--evenness-map", &args.evennessMap}})
+    if (!path->empty())
+      for (std::size_t i = 0; i < count; ++i) outputs.push_back({option, visualizationPath(*path, i, count)});
+  std::vector<std::string> inputs = args.files;
+  inputs.push_back(args.report);
+  checkOutputsBeforeTheRun(outputs, inputs);
 
   if (args.gap) args.metrics.gap = *args.gap;
   else if (!args.report.empty()) args.metrics.gap = gapFromReport(args.report);

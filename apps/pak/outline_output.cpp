@@ -24,6 +24,11 @@ void reportOutlines(nlohmann::json& report, bool polyline, const SvgPathStats& p
   report["output-outlines"] = polyline ? "polygons" : "cubic Béziers";
   report["output-points"] = paths.points;  // every path's coordinate pairs, Bézier control points included
   report["output-largest-curve-deviation"] = paths.largestDeviation * canonicalScale;
+  // The art drawn from input shapes (elements, fixed art): the points its input drew it with,
+  // and the written points for each drawn one.
+  report["drawn-points"] = paths.drawnPoints;
+  report["output-points-per-drawn-point"] =
+      paths.drawnPoints > 0 ? static_cast<double>(paths.pointsOfDrawnShapes) / static_cast<double>(paths.drawnPoints) : 0.0;
 }
 
 }  // namespace pak::cli

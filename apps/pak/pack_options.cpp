@@ -38,6 +38,7 @@ OptionTable<RepulsionOptions> repulsionOptionTable() {
       {"secondary-press", field(&O::secondary, &P::pressIterations), "after the secondary pass stops, the primaries (frozen through it) are freed and all elements are pressed into the pockets left for this many iterations before the clean-up (0: none, as in the thesis)"},
       {"shape-matching", field(&O::shapeMatching, &CornerDockingOptions::enabled), "place elements that fit the container's sharp convex corners there first and dock them (thesis 4.7)"},
       {"docking-strength", field(&O::shapeMatching, &CornerDockingOptions::dockingStrength), "with --shape-matching: spring strength holding each matched element's tip on its corner"},
+      {"linear-art", field(&O::linearArt), "draw each element's art on its deformed mesh with the thesis's piecewise-linear map, as the simulation's checks do, instead of a smoothed one: the art bends a little wherever it crosses a mesh edge, and its fitted curves need about twice the points"},
       {"orientation-torsion", field(&O::orientation, &OrientationOptions::torsion), "k_tor used with --orientation upright/field when --k-torsion is 0"},
   };
   return elements + mounted(simulationOptions(), field(&O::simulation)) + passes +

@@ -130,6 +130,8 @@ nlohmann::json packReport(const PackArguments& args, const Scene& scene, const P
   report["primary-area-cv"] = audit.primaryAreaSpread;  // standard deviation / mean of the primaries' art areas
   report["canonical-scale"] = packing.canonicalScale;
   reportOutlines(report, args.polyline, paths, packing.canonicalScale);
+  report["art-deformation"] = options.linearArt ? "linear" : "smoothed";
+  report["linear-art-fallbacks"] = packing.linearArtFallbacks;  // smoothed art unclean: drawn linear
   reportElementsPerContainer(report, packing.elements, packing.containers.size());
   reportCorners(report, packing, audit.outlines);
   if (options.shapeMatching.enabled) {

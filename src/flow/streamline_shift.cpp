@@ -328,7 +328,9 @@ Polyline cheapestPath(const NodeGraph& g, const std::vector<std::pair<int, int>>
 Polyline smoothWithinFreeSpace(const Polyline& path, const FreeSpaceMap& map, double tolerance) {
   for (int attempt = 0; attempt < 3; ++attempt, tolerance *= 0.5) {
     // The path turns by less than 90° at every node, so a 90° corner angle smooths it all.
-    Polyline smooth = flatten(fitCubicBeziers(path, tolerance, 0.5 * std::numbers::pi), 0.25 * tolerance);
+    // Splitting at the worst point, as the streamline shift was measured with (docs/flowpak.md).
+    Polyline smooth =
+        flatten(fitCubicBeziers(path, tolerance, 0.5 * std::numbers::pi, FitSpans::SplitAtWorst), 0.25 * tolerance);
     if (staysFree(smooth, map)) return smooth;
   }
   return path;

@@ -198,6 +198,7 @@ SvgDocument readPathString(const std::string& text, const std::string& name) {
     }
 
     SvgShape shape;
+    shape.drawnPoints = static_cast<int>(subpath.points.size());
     shape.subpaths.push_back(std::move(subpath));
     shape.tag = "path-file";
     shape.line = lineNumber;

@@ -85,6 +85,7 @@ std::string pathData(const Shape& shape, int precision, double curveTolerance, S
   // The deviation is measured on the chain flattened this finely (about its error).
   constexpr double kDeviationPrecision = 0.05;  // × curveTolerance
   std::string d;
+  const std::size_t pointsBefore = stats ? stats->points : 0;
   auto put = [&](Vec2 p) {  // appends "x,y"
     if (stats) ++stats->points;
     d += formatNumber(p.x, precision);
@@ -118,6 +119,10 @@ std::string pathData(const Shape& shape, int precision, double curveTolerance, S
     }
     if (subpath.points.size() == 1 && !subpath.closed) d += " h0";  // a dot: drawn by round or square caps
     if (subpath.closed) d += " Z";
+  }
+  if (stats && shape.drawnPoints > 0) {
+    stats->drawnPoints += static_cast<std::size_t>(shape.drawnPoints);
+    stats->pointsOfDrawnShapes += stats->points - pointsBefore;
   }
   return d;
 }

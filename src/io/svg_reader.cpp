@@ -1759,6 +1759,8 @@ SvgDocument readSvgString(const std::string& text, const std::string& name, cons
     const bool strokesDots = pending.stroke.solid.kind != PaintKind::None || !pending.stroke.server.empty();
     const bool dots = strokesDots && shape.strokeWidth > 0.0 && shape.lineCap != StrokeCap::Butt;
     for (const CurveSubpath& curves : pending.subpaths) {
+      shape.drawnPoints += 1;
+      for (const CurveSegment& segment : curves.segments) shape.drawnPoints += segment.cubic ? 3 : 1;
       Subpath subpath = flatten(curves, tolerance);
       const bool dot = dots && subpath.points.size() == 1 && (!curves.segments.empty() || curves.closed);
       if (dot) subpath.closed = false;

@@ -323,13 +323,14 @@ int settle(PackingSimulation& sim, const RepulsionRun& run, const RepulsionStopR
 
 namespace {
 
-// One mesh's art, replayed on its vertices, in input coordinates (strokes at its growth).
+// One mesh's art, replayed on its vertices, in input coordinates (strokes at its growth): with
+// the thesis's linear map, or `smooth`ed (replayDrawnArt).
 std::vector<Shape> placedArt(const RepulsionRun& run, const PackingSimulation& sim,
                              const std::vector<PreparedElement>& types, const MeshInstance& mesh,
-                             std::vector<Vec2>& artPoints) {
+                             std::vector<Vec2>& artPoints, bool smooth = false) {
   const CanonicalFrame& frame = run.setup.frame;
   const PreparedElement& type = types[mesh.type];
-  replayArt(type.mesh, sim.positions().data() + mesh.vertexBegin, artPoints);
+  replayDrawnArt(type.mesh, sim.positions().data() + mesh.vertexBegin, !smooth, artPoints);
   std::vector<Shape> art = type.art;
   std::size_t k = 0;
   for (Shape& shape : art) {
@@ -352,6 +353,38 @@ std::vector<std::size_t> offendingOutlines(std::vector<Region> outlines, const R
   return offending;
 }
 
+// The smoothed art of each element, where it is as clean as the linear art the clean-up
+// checked: an element whose smoothed art overlaps another's, leaves the container or crosses
+// itself where its linear art does not is drawn with the linear art instead, round after round
+// (a reverted element can uncover another), so the packing is never less clean than the
+// thesis's map makes it. Returns how many were reverted.
+int smoothWhereClean(Packing& packing, const std::vector<std::vector<Shape>>& linearArt) {
+  constexpr int kRounds = 4;  // then every element left smooth is reverted too
+  std::vector<char> linear(packing.elements.size(), 0);
+  for (int round = 0; round <= kRounds; ++round) {
+    std::vector<std::size_t> revert = artOffenders(packing);
+    for (std::size_t e = 0; e < packing.elements.size(); ++e) {
+      if (linear[e]) continue;
+      const std::vector<Ring> drawn = artRings(packing.elements[e].art), straight = artRings(linearArt[e]);
+      for (std::size_t r = 0; r < drawn.size() && r < straight.size(); ++r)
+        if (ringSelfIntersects(drawn[r]) && !ringSelfIntersects(straight[r])) {
+          revert.push_back(e);
+          break;
+        }
+    }
+    std::erase_if(revert, [&](std::size_t e) { return linear[e] != 0; });
+    if (revert.empty()) break;
+    if (round == kRounds)
+      for (std::size_t e = 0; e < linear.size(); ++e) revert.push_back(e);
+    for (std::size_t e : revert)
+      if (!linear[e]) {
+        linear[e] = 1;
+        packing.elements[e].art = linearArt[e];
+      }
+  }
+  return static_cast<int>(std::count(linear.begin(), linear.end(), 1));
+}
+
 }  // namespace
 
 Packing collectPacking(const RepulsionRun& run, const PackingSimulation& sim, const std::vector<PreparedElement>& types) {
@@ -364,6 +397,9 @@ Packing collectPacking(const RepulsionRun& run, const PackingSimulation& sim, co
   packing.vertexCount = static_cast<int>(sim.positions().size());
   packing.springCount = static_cast<int>(sim.springCount());
   std::vector<Vec2> artPoints;
+  // A tile's elements cross its edges by design: the clean check below does not apply there.
+  const bool smooth = !run.options.linearArt && !isTiled(run.period);
+  std::vector<std::vector<Shape>> linearArt;  // what the clean-up checked, when drawing smoothed
   for (const MeshInstance& mesh : sim.meshes()) {
     const PreparedElement& type = types[mesh.type];
     const Vec2* vertices = sim.positions().data() + mesh.vertexBegin;
@@ -372,7 +408,8 @@ Packing collectPacking(const RepulsionRun& run, const PackingSimulation& sim, co
     placed.source = type.source;
     placed.growth = mesh.growth;
     placed.container = mesh.container;
-    placed.art = placedArt(run, sim, types, mesh, artPoints);
+    placed.art = placedArt(run, sim, types, mesh, artPoints, smooth);
+    if (smooth) linearArt.push_back(placedArt(run, sim, types, mesh, artPoints));
     int edges = 0;
     for (const Spring& s : type.mesh.springs)
       if (s.kind == SpringKind::Edge) {
@@ -388,6 +425,7 @@ Packing collectPacking(const RepulsionRun& run, const PackingSimulation& sim, co
     packing.elements.push_back(std::move(placed));
   }
   packing.fixedArt = run.fixedArt;
+  if (smooth) packing.linearArtFallbacks = smoothWhereClean(packing, linearArt);
   return packing;
 }
 

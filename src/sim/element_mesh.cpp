@@ -181,6 +181,7 @@ ElementMesh buildElementMesh(const std::vector<Shape>& art, const Region& outlin
   for (const Shape& shape : art)
     for (const Subpath& sub : shape.subpaths)
       for (Vec2 p : sub.points) result.bindings.push_back(bindPoint(p, result.mesh));
+  result.smoothing = neighbourhoodFits(result.mesh);
   return result;
 }
 

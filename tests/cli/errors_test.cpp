@@ -178,6 +178,8 @@ TEST(CliErrors, OutputsAreCheckedBeforeTheRun) {
       {kAnimate + "-o " + shellQuoted(frames) + " --report examples/animate/stars/stars.json",
        "examples/animate/stars/stars.json: --report would overwrite an input of this run"},
       {kAnimate + "-o " + shellQuoted(frames) + " --png " + shellQuoted(missing), missing + ": cannot write: folder"},
+      {"metrics " + shellQuoted(scene) + " --json " + shellQuoted(scene), scene + ": --json would overwrite an input of this run"},
+      {"metrics " + shellQuoted(scene) + " --plot " + shellQuoted(o) + " --csv " + shellQuoted(o), o + ": given to both"},
   };
   for (const auto& [arguments, start] : cases) expectOneLineError(arguments, start);
   EXPECT_EQ(readWholeFile(scene), original);

@@ -246,3 +246,25 @@ TEST(CliPack, OutlinesAreCurvesByDefaultAndPolygonsOnRequest) {
   EXPECT_EQ(c["fill-ratio-art"], p["fill-ratio-art"]);
   EXPECT_EQ(count(curveSvg, "data-source=\""), count(polygonSvg, "data-source=\""));
 }
+
+// Issue 17's target: the curves hold at most 3 × the points the art was drawn with, within 0.1
+// canonical units. The smoothed art needs far fewer than the thesis's linear map, whose kinks
+// at every mesh edge the curves must follow.
+TEST(CliPack, CurvesHoldAtMostThreeTimesTheDrawnPoints) {
+  ScratchFolder dir("cli-pack-drawn-points");
+  const std::string common = "pack -c examples/scene.svg -e examples/elements --count 12 --max-iterations 600 --quiet";
+  PakRun smooth = runPak(common + " -o " + shellQuoted(dir.file("s.svg")) + " --report " + shellQuoted(dir.file("s.json")));
+  PakRun linear = runPak(common + " --linear-art -o " + shellQuoted(dir.file("l.svg")) + " --report " +
+                         shellQuoted(dir.file("l.json")));
+  ASSERT_EQ(smooth.exitCode, 0) << smooth.err;
+  ASSERT_EQ(linear.exitCode, 0) << linear.err;
+  auto s = nlohmann::json::parse(readWholeFile(dir.file("s.json")));
+  auto l = nlohmann::json::parse(readWholeFile(dir.file("l.json")));
+  EXPECT_GT(s["drawn-points"].get<int>(), 12 * 20);  // every element drew some
+  EXPECT_EQ(s["drawn-points"], l["drawn-points"]);
+  EXPECT_LE(s["output-points-per-drawn-point"].get<double>(), 3.0);
+  EXPECT_LT(s["output-points-per-drawn-point"].get<double>(), 0.8 * l["output-points-per-drawn-point"].get<double>());
+  EXPECT_LE(s["output-largest-curve-deviation"].get<double>(), 0.1);
+  EXPECT_LE(l["output-largest-curve-deviation"].get<double>(), 0.1);
+  EXPECT_EQ(s["overlap-count"], 0);
+}

@@ -174,5 +174,41 @@ TEST(BezierFit, ALongEdgeBetweenTurnsDoesNotBowOffThePolygon) {
   }
 }
 
+// A chain of three different cubics joined smoothly, densely sampled: Schneider's split at the
+// worst point cuts where the error peaks, and needs more curves than reaching each curve as
+// far as it fits. Both stay within the tolerance, both ways.
+TEST(BezierFit, LongestSpansNeedFewerCurvesThanSplittingAtTheWorstPoint) {
+  const std::vector<CubicBezier> truth{{Vec2{0, 0}, Vec2{10, 12}, Vec2{25, 14}, Vec2{35, 4}},
+                                       {Vec2{35, 4}, Vec2{42, -3}, Vec2{55, -10}, Vec2{70, -2}},
+                                       {Vec2{70, -2}, Vec2{80, 3}, Vec2{86, 15}, Vec2{84, 30}}};
+  Polyline points;
+  for (const CubicBezier& c : truth)
+    for (int k = points.empty() ? 0 : 1; k <= 60; ++k) points.push_back(bezierPoint(c, k / 60.0));
+  const double tolerance = 0.02;
+  const auto longest = fitCubicBeziers(points, tolerance, 1.0, FitSpans::Longest);
+  const auto split = fitCubicBeziers(points, tolerance, 1.0, FitSpans::SplitAtWorst);
+  expectChained(longest, points.front(), points.back());
+  EXPECT_LE(fitDeviation(points, false, longest, 0.01 * tolerance), 1.02 * tolerance);
+  EXPECT_LE(fitDeviation(points, false, split, 0.01 * tolerance), 1.02 * tolerance);
+  EXPECT_LT(longest.size(), split.size()) << longest.size() << " against " << split.size();
+}
+
+// Three points fit exactly by a curve whose handles are longer than its chord: the curve runs
+// past its end, back past its start and forward again, a zigzag along the line that measured
+// 1.27 × the tolerance off the polygon on a packed element. Such handles are refused.
+TEST(BezierFit, NoHandleLongerThanItsChord) {
+  const Polyline zigzag{{560.664, 292.786}, {558.513, 294.323}, {556.266, 295.641}, {554.148, 297.010},
+                        {552.110, 298.460}, {550.132, 299.989}, {548.210, 301.603}};
+  for (double tolerance : {0.02, 0.0782, 0.2}) {
+    const auto curves = fitCubicBeziers(zigzag, tolerance);
+    for (const CubicBezier& c : curves) {
+      const double chord = distance(c[0], c[3]);
+      EXPECT_LE(distance(c[0], c[1]), chord + 1e-9);
+      EXPECT_LE(distance(c[3], c[2]), chord + 1e-9);
+    }
+    EXPECT_LE(fitDeviation(zigzag, false, curves, 0.01 * tolerance), 1.02 * tolerance) << tolerance;
+  }
+}
+
 }  // namespace
 }  // namespace pak

@@ -101,6 +101,23 @@ TEST(SvgReaderPath, FullCircleFromTwoArcs) {
   EXPECT_NEAR(fillArea(R"~(<path d="m50 30 a20 20 0 1 0 0 40 a20 20 0 1 0 0 -40 z"/>)~"), expected, expected * 2e-3);
 }
 
+// What an editor would show as Bézier points: 1 per move or line, 3 per cubic (quadratics and
+// arcs become cubics, an arc one per quarter turn at most), nothing for Z.
+TEST(SvgReaderPath, CountsThePointsAShapeWasDrawnWith) {
+  auto drawn = [](const std::string& body) {
+    SvgDocument document = read(body);
+    EXPECT_EQ(document.shapes.size(), 1u) << body;
+    return document.shapes.empty() ? -1 : document.shapes[0].drawnPoints;
+  };
+  EXPECT_EQ(drawn(R"~(<path d="M10 10 L40 10 C50 10 50 30 40 30 Q30 40 10 30 Z"/>)~"), 1 + 1 + 3 + 3);
+  // Two half circles: two cubics each at least, three when rounding puts a half turn just
+  // over two quarter turns.
+  const int circle = drawn(R"~(<path d="M50 30 A20 20 0 1 0 50 70 A20 20 0 1 0 50 30 Z"/>)~");
+  EXPECT_GE(circle, 1 + 4 * 3);
+  EXPECT_LE(circle, 1 + 6 * 3);
+  EXPECT_EQ(drawn(R"~(<path d="M10 10 h20 v20 h-20 z M60 60 l5 5"/>)~"), 4 + 2);
+}
+
 TEST(SvgReaderPath, ArcFlagsPickTheRightHalf) {
   // A half disc of radius 10 closed by its diameter: small/large and sweep both give a half.
   const double half = kPi * 100 / 2;

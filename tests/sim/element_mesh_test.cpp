@@ -91,6 +91,46 @@ TEST(ElementMesh, ReplayReproducesArtAndFollowsRigidMotion) {
   }
 }
 
+// The drawn art follows any affine deformation exactly, as the thesis's linear map does; on a
+// mesh with vertex jitter it is smoother than the linear map (its second differences are
+// smaller) and stays near it.
+TEST(ElementMesh, DrawnArtIsExactForAffineMapsAndSmoothsMeshJitter) {
+  Ring ellipse;
+  for (int k = 0; k < 240; ++k) {
+    const double a = 2 * std::numbers::pi * k / 240;
+    ellipse.push_back({60 * std::cos(a), 35 * std::sin(a)});
+  }
+  ElementMeshOptions options;
+  options.gap = 6.0;
+  options.spacing = 8.0;
+  const ElementMesh m = buildElementMesh({filledShape(ellipse)}, Region{Polygon{ellipse, {}}}, options);
+  ASSERT_EQ(m.smoothing.offsets.size(), m.mesh.vertices.size() + 1);
+  std::vector<Vec2> sheared, drawn, linear;
+  for (Vec2 v : m.mesh.vertices) sheared.push_back(Vec2{1.3 * v.x + 0.4 * v.y + 5, -0.2 * v.x + 0.8 * v.y - 3});
+  replayDrawnArt(m, sheared.data(), false, drawn);
+  replayArt(m, sheared.data(), linear);
+  ASSERT_EQ(drawn.size(), ellipse.size());
+  for (std::size_t i = 0; i < drawn.size(); ++i) EXPECT_LT(distance(drawn[i], linear[i]), 1e-9);
+
+  // Every vertex jittered by up to ±0.6 (deterministically).
+  std::vector<Vec2> jittered = m.mesh.vertices;
+  for (std::size_t v = 0; v < jittered.size(); ++v)
+    jittered[v] += Vec2{0.6 * std::sin(12.9898 * v), 0.6 * std::cos(78.233 * v)};
+  replayDrawnArt(m, jittered.data(), false, drawn);
+  replayArt(m, jittered.data(), linear);
+  auto wobble = [](const std::vector<Vec2>& ring) {  // mean |second difference|
+    double sum = 0;
+    for (std::size_t i = 0; i < ring.size(); ++i)
+      sum += length(ring[(i + ring.size() - 1) % ring.size()] - ring[i] * 2.0 + ring[(i + 1) % ring.size()]);
+    return sum / ring.size();
+  };
+  EXPECT_LT(wobble(drawn), 0.6 * wobble(linear));
+  for (std::size_t i = 0; i < drawn.size(); ++i) EXPECT_LT(distance(drawn[i], linear[i]), 1.2);
+  // The linear flag gives the thesis's map.
+  replayDrawnArt(m, jittered.data(), true, drawn);
+  EXPECT_EQ(drawn, linear);
+}
+
 TEST(ElementMesh, SeparatePiecesBecomeOneSkin) {
   Ring a = {{0, 0}, {20, 0}, {20, 20}, {0, 20}};
   Ring b = {{30, 0}, {50, 0}, {50, 20}, {30, 20}};

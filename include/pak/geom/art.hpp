@@ -34,6 +34,9 @@ struct Shape {
   StrokeCap lineCap = StrokeCap::Round;
   StrokeJoin lineJoin = StrokeJoin::Round;
   double miterLimit = 4.0;
+  // The coordinate pairs it was drawn with (1 per move or line, 3 per cubic, as editors
+  // count Bézier points); 0 when Pak made it. What the output's fitted curves are measured by.
+  int drawnPoints = 0;
 };
 
 // The region the shape's fill covers (fill rule applied; open subpaths closed, as SVG does).

@@ -19,6 +19,9 @@ struct SvgWriteOptions {
 struct SvgPathStats {
   std::size_t points = 0;         // coordinate pairs in the paths' `d` (control points included)
   double largestDeviation = 0.0;  // of a fitted curve from the points it fits (input units; 0: none fitted)
+  // Of the shapes drawn from an input shape (Shape::drawnPoints > 0): the points they were
+  // drawn with, and the points written for them.
+  std::size_t drawnPoints = 0, pointsOfDrawnShapes = 0;
 };
 
 // `stats`, when given, receives what the paths hold (measuring the deviation costs a little).

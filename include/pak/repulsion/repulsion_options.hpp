@@ -93,6 +93,10 @@ struct RepulsionOptions {
   CornerDockingOptions shapeMatching;
   TilingOptions tiling;
   OrientationOptions orientation;
+  // The output draws each element's art on its mesh with the thesis's piecewise-linear map, as
+  // the simulation's checks do, instead of a smoothed one (replayDrawnArt): the art then bends
+  // a little at every triangle edge, and its fitted curves need about twice the points.
+  bool linearArt = false;
   RunOptions run;
 };
 

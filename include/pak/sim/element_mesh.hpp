@@ -27,6 +27,15 @@ struct ArtBinding {
   std::array<double, 3> weights{};
 };
 
+// A linear smoothing of mesh positions (art_replay.cpp): vertex i moves to
+// Σ weights[k] · x[neighbours[k]] over k in [offsets[i], offsets[i + 1]), where its
+// neighbourhood's least-squares quadratic map (rest → deformed) puts it.
+struct NeighbourhoodFits {
+  std::vector<int> offsets;  // one per vertex, plus the end
+  std::vector<int> neighbours;
+  std::vector<double> weights;
+};
+
 struct ElementMeshOptions {
   double gap = 10.0;          // d_gap: the skin is the art offset outward by gap/2
   double spacing = 10.0;      // distance between boundary samples and interior points
@@ -45,6 +54,7 @@ struct ElementMesh {
   Vec2 restCentroid;       // mean of the vertices (the "centre of mass" of unit masses)
   // One binding per art point, in the order shapes → subpaths → points.
   std::vector<ArtBinding> bindings;
+  NeighbourhoodFits smoothing;  // of the mesh's vertices, for replaySmoothArt
 };
 
 // `art` and `outline` in the frame the mesh is wanted in (Pak uses canonical units, centred).
@@ -60,7 +70,16 @@ double librarySkinScale(const Library& library, double nominalSkinArea, double g
 // The skin of an outline: offset by gap/2, holes filled, pieces merged into one polygon.
 Polygon elementSkin(const Region& outline, double gap, double arcTolerance);
 
-// Replays the bindings on deformed vertex positions: art points in the same order.
+// Replays the bindings on deformed vertex positions: art points in the same order. This is the
+// thesis's piecewise-linear map: it is what the simulation's own checks of the art use.
 void replayArt(const ElementMesh& mesh, const Vec2* deformedVertices, std::vector<Vec2>& artPoints);
+
+// The neighbourhood fits of a triangle mesh (each vertex's 2-ring).
+NeighbourhoodFits neighbourhoodFits(const TriMesh& mesh);
+
+// The art as drawn: the same bindings replayed on a smoothed deformation, without the kinks
+// a piecewise-linear map makes at every triangle edge (art_replay.cpp). Any affine
+// deformation is reproduced exactly. `linear` gives replayArt's points instead.
+void replayDrawnArt(const ElementMesh& mesh, const Vec2* deformedVertices, bool linear, std::vector<Vec2>& artPoints);
 
 }  // namespace pak

@@ -68,6 +68,9 @@ struct Packing {
   int dockedElements = 0;
   double shapeMatchingSeconds = 0.0;
   Vec2 tile{};                   // W × H of a tileable packing (input units); 0: not tiled
+  // Elements drawn with the linear map although the smoothed one was asked for: theirs
+  // overlapped, left the container or crossed itself (RepulsionOptions::linearArt).
+  int linearArtFallbacks = 0;
 };
 
 // What one element's art paints, as one region (the union of its shapes), and the same for
