@@ -31,11 +31,11 @@ bool sameMarkup(const std::optional<RawMarkup>& a, const std::optional<RawMarkup
   return !a || (a->content == b->content && a->defs == b->defs && a->namespaces == b->namespaces);
 }
 
-// Same paint and the same point counts, so the two `d` strings have the same commands and
-// SMIL can interpolate between them.
+// Same paint and the same point counts, so the two `d` strings (and dash lists) have the same
+// commands and SMIL can interpolate between them.
 bool sameShapeStructure(const DrawnShape& a, const DrawnShape& b) {
   if (a.subpaths.size() != b.subpaths.size() || a.fill != b.fill || a.stroke != b.stroke ||
-      a.opacity != b.opacity || a.fillRule != b.fillRule || a.id != b.id)
+      a.opacity != b.opacity || a.fillRule != b.fillRule || a.id != b.id || a.dashArray.size() != b.dashArray.size())
     return false;
   for (std::size_t i = 0; i < a.subpaths.size(); ++i)
     if (a.subpaths[i].points.size() != b.subpaths[i].points.size() || a.subpaths[i].closed != b.subpaths[i].closed)
@@ -122,14 +122,6 @@ std::string morphingSvg(const std::vector<Drawing>& frames, const AnimationOutpu
       values += ';';
       values += dk;
     }
-    // A stroke keeps its width relative to a growing or shrinking shape: animate it too.
-    std::string widths = formatNumber(shape.strokeWidth, builder.precision());
-    bool widthChanges = false;
-    for (std::size_t k = 1; k < n; ++k) {
-      const std::string wk = formatNumber(shapes[k][index]->strokeWidth, builder.precision());
-      widthChanges = widthChanges || wk != formatNumber(shape.strokeWidth, builder.precision());
-      widths += ';' + wk;
-    }
     std::string text;
     const std::string indent(static_cast<std::size_t>(depth) * 2, ' ');
     if (moves) {
@@ -137,10 +129,30 @@ std::string morphingSvg(const std::vector<Drawing>& frames, const AnimationOutpu
       text += indent + "<animate attributeName=\"d\"" + repeat + " calcMode=\"linear\" keyTimes=\"" + keyTimes +
               "\" values=\"" + values + "\"/>\n";
     }
-    if (widthChanges && shape.stroke) {
-      if (options.loop) widths += ';' + formatNumber(shape.strokeWidth, builder.precision());
-      text += indent + "<animate attributeName=\"stroke-width\"" + repeat + " calcMode=\"linear\" keyTimes=\"" +
-              keyTimes + "\" values=\"" + widths + "\"/>\n";
+    // An attribute written as `valueOf` gives it in each frame, animated when it changes.
+    auto animateStroke = [&](const char* attribute, auto valueOf) {
+      const std::string first = valueOf(shape);
+      std::string all = first;
+      bool changes = false;
+      for (std::size_t k = 1; k < n; ++k) {
+        const std::string vk = valueOf(*shapes[k][index]);
+        changes = changes || vk != first;
+        all += ';' + vk;
+      }
+      if (!changes) return;
+      if (options.loop) all += ';' + first;
+      text += indent + "<animate attributeName=\"" + attribute + "\"" + repeat + " calcMode=\"linear\" keyTimes=\"" +
+              keyTimes + "\" values=\"" + all + "\"/>\n";
+    };
+    // A stroke keeps its width and dashes relative to a growing or shrinking shape: animate them too.
+    if (shape.stroke) {
+      const int precision = builder.precision();
+      animateStroke("stroke-width", [&](const DrawnShape& s) { return formatNumber(s.strokeWidth, precision); });
+      if (!shape.dashArray.empty()) {
+        animateStroke("stroke-dasharray", [&](const DrawnShape& s) { return svg_builder::dashList(s.dashArray, precision); });
+        if (shape.dashOffset != 0.0)
+          animateStroke("stroke-dashoffset", [&](const DrawnShape& s) { return formatNumber(s.dashOffset, precision); });
+      }
     }
     return text;  // empty for a still shape
   };

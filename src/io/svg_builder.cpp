@@ -75,6 +75,15 @@ std::string formatNumber(double value, int precision) {
   return text;
 }
 
+std::string dashList(const std::vector<double>& dashes, int precision) {
+  std::string text;
+  for (double length : dashes) {
+    if (!text.empty()) text += ' ';
+    text += formatNumber(length, precision);
+  }
+  return text;
+}
+
 std::string hexColor(const Color& color) {
   std::array<char, 8> buffer{};
   std::snprintf(buffer.data(), buffer.size(), "#%02x%02x%02x", color.r, color.g, color.b);
@@ -208,6 +217,10 @@ void SvgBuilder::writeShape(const DrawnShape& shape, int depth) {
       attribute("stroke-linejoin", shape.lineJoin == StrokeJoin::Round ? "round" : "bevel");
     else if (shape.miterLimit != 4.0)
       attribute("stroke-miterlimit", formatNumber(shape.miterLimit, precision_));
+    if (!shape.dashArray.empty()) {
+      attribute("stroke-dasharray", dashList(shape.dashArray, precision_));
+      if (shape.dashOffset != 0.0) attribute("stroke-dashoffset", formatNumber(shape.dashOffset, precision_));
+    }
   }
   if (shape.opacity < 1.0) attribute("opacity", formatOpacity(shape.opacity));
   std::string children = shapeChildren ? shapeChildren(shape, d, depth + 1) : std::string();

@@ -20,6 +20,8 @@ bool isXmlName(const std::string& name);
 // InputError for a non-finite value.
 std::string formatNumber(double value, int precision);
 std::string hexColor(const Color& color);
+// A stroke-dasharray value: the lengths with `precision` decimals, separated by spaces.
+std::string dashList(const std::vector<double>& dashes, int precision);
 // The `d` of a shape: M/L/Z with line segments, or cubic Béziers fitted within curveTolerance > 0.
 // `stats`, when given, counts its points and takes the fits' largest deviation into account.
 std::string pathData(const Shape& shape, int precision, double curveTolerance, SvgPathStats* stats = nullptr);

@@ -138,6 +138,8 @@ struct Style {
   StrokeCap lineCap = StrokeCap::Butt;
   StrokeJoin lineJoin = StrokeJoin::Miter;
   double miterLimit = 4.0;
+  std::vector<double> dashArray;  // empty: solid
+  double dashOffset = 0.0;
   FillRule clipRule = FillRule::NonZero;
   bool visible = true;
   std::uint32_t color = 0x000000;  // the `color` property, used by currentColor
@@ -315,7 +317,7 @@ struct ErrorPolicy {
     return true;
   }
   template <class Context, class AttributeTag, class Value>
-  static bool parse_failed(const Context&, AttributeTag, const Value& value) {
+  static bool parse_failed(const Context& context, AttributeTag, const Value& value) {
     const std::string name = svgpp::attribute_name<char>::get<AttributeTag>();
     std::string text = toString(value);
     if (text.size() > 80) text = text.substr(0, 77) + "...";
@@ -327,6 +329,8 @@ struct ErrorPolicy {
                                   (looksNonFinite(text) ? "contains a non-finite number (NaN or infinity)"
                                                         : "cannot be parsed"));
     }
+    if constexpr (std::is_same_v<AttributeTag, tag::attribute::stroke_dasharray> && std::is_base_of_v<NodeContext, Context>)
+      const_cast<Context&>(context).rejectDashArray();
     if (currentReader)
       currentReader->warn(where, "ignored " + name + "=\"" + text + "\" (cannot be parsed)");
     return true;
@@ -409,7 +413,6 @@ constexpr UnsupportedEffect kUnsupportedEffects[] = {
     {"marker-mid", "markers are not supported; not drawn"},
     {"marker-end", "markers are not supported; not drawn"},
     {"mix-blend-mode", "mix-blend-mode is not supported; blended normally"},
-    {"stroke-dasharray", "stroke-dasharray is not applied; the stroke is drawn solid"},
 };
 
 class NodeContext {
@@ -587,6 +590,35 @@ class NodeContext {
     if (std::isfinite(v) && v >= 1.0) style_.miterLimit = v;
     else state_->warn(describe(), "ignored stroke-miterlimit " + formatNumber(v) + " (must be at least 1)");
   }
+  // Dashes as SVG reads them: an odd count repeats to an even one; all zeros is solid; a
+  // negative length is an error, and the property is then ignored.
+  void set(tag::attribute::stroke_dasharray, tag::value::none) { style_.dashArray.clear(); }
+  void set(tag::attribute::stroke_dasharray, tag::value::inherit) {}
+  template <class Range>
+  void set(tag::attribute::stroke_dasharray, const Range& lengths) {
+    dashBeforeSet_ = style_.dashArray;
+    std::vector<double> dashes(boost::begin(lengths), boost::end(lengths));
+    double sum = 0.0;
+    for (double length : dashes) {
+      if (!std::isfinite(length) || length < 0.0) {
+        state_->warn(describe(), "ignored stroke-dasharray with the length " + formatNumber(length) +
+                                     " (lengths must be finite and not negative)");
+        return;
+      }
+      sum += length;
+    }
+    if (!(sum > 0.0)) dashes.clear();
+    if (dashes.size() % 2 == 1) {
+      const std::vector<double> once = dashes;
+      dashes.insert(dashes.end(), once.begin(), once.end());
+    }
+    style_.dashArray = std::move(dashes);
+  }
+  // SVG++ reports a list it could not parse after handing over what it read: back to before.
+  void rejectDashArray() { style_.dashArray = dashBeforeSet_; }
+  void set(tag::attribute::stroke_dashoffset, double v) {
+    if (std::isfinite(v)) style_.dashOffset = v;
+  }
   void set(tag::attribute::clip_rule, tag::value::nonzero) { style_.clipRule = FillRule::NonZero; }
   void set(tag::attribute::clip_rule, tag::value::evenodd) { style_.clipRule = FillRule::EvenOdd; }
   void set(tag::attribute::fill_rule, tag::value::nonzero) { style_.fillRule = FillRule::NonZero; }
@@ -647,6 +679,7 @@ class NodeContext {
   std::vector<ClipUse> clips_;  // clip paths of the ancestors
   std::string ownClip_;         // this element's clip-path id ("" if none)
   std::string clipPathId_;      // inside <clipPath id=…>: its id
+  std::vector<double> dashBeforeSet_;  // see rejectDashArray
 
   // The id of clip-path="url(#id)"; "" for none or anything else.
   static std::string clipReference(const std::string& value) {
@@ -786,12 +819,15 @@ class ShapeContext : public NodeContext {
     mapAll(m, subpaths_);
     pending.subpaths = std::move(subpaths_);
     SvgShape& shape = pending.shape;
-    shape.strokeWidth = style_.strokeWidth * m.lengthScale();
+    shape.strokeWidth = style_.strokeWidth;
     shape.opacity = effectiveOpacity();
     shape.fillRule = style_.fillRule;
     shape.lineCap = style_.lineCap;
     shape.lineJoin = style_.lineJoin;
     shape.miterLimit = style_.miterLimit;
+    shape.dashArray = style_.dashArray;
+    shape.dashOffset = style_.dashOffset;
+    scaleStroke(shape, m.lengthScale());
     shape.id = id_;
     shape.tag = tag_;
     shape.line = state_->lines->lineOf(node_);
@@ -975,7 +1011,8 @@ using StyleAttributes =
                        tag::attribute::fill_opacity, tag::attribute::stroke_opacity,
                        tag::attribute::opacity, tag::attribute::stroke_width, tag::attribute::fill_rule,
                        tag::attribute::stroke_linecap, tag::attribute::stroke_linejoin,
-                       tag::attribute::stroke_miterlimit, tag::attribute::clip_rule, tag::attribute::display, tag::attribute::visibility, tag::attribute::color>;
+                       tag::attribute::stroke_miterlimit, tag::attribute::stroke_dasharray,
+                       tag::attribute::stroke_dashoffset, tag::attribute::clip_rule, tag::attribute::display, tag::attribute::visibility, tag::attribute::color>;
 
 using StructureAttributes = boost::mpl::vector<
     boost::mpl::pair<tag::element::svg, tag::attribute::viewBox>,
@@ -1664,6 +1701,7 @@ std::vector<SvgShape> clippedShapes(const SvgShape& shape, const Region& clip, d
   SvgShape base = shape;
   base.subpaths.clear();
   base.stroke.reset();
+  base.dashArray.clear();
   base.fillRule = FillRule::EvenOdd;  // disjoint polygons with their holes
   if (shape.fill) {
     SvgShape fill = base;
@@ -1779,6 +1817,8 @@ SvgDocument readSvgString(const std::string& text, const std::string& name, cons
       document.shapes.push_back(std::move(shape));
       continue;
     }
+    if (shape.stroke && !shape.dashArray.empty())
+      state.warn(pending.description, "stroke-dasharray under a clip-path: the clipped stroke is drawn solid");
     for (SvgShape& clipped : clippedShapes(shape, *clip, tolerance)) document.shapes.push_back(std::move(clipped));
   }
   return document;

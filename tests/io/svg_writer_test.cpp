@@ -389,6 +389,32 @@ TEST(SvgWriterRoundTrip, StrokeCapsJoinsMiterLimitAndDotsComeBack) {
   EXPECT_NEAR(pak::area(pak::paintedRegion(back.shapes[2])), std::acos(-1.0) * 4, 0.25);  // a disc of radius 2 (as a polygon)
 }
 
+// Dashes are written on stroked shapes (the offset when not 0) and read back; a shape without
+// a stroke writes none.
+TEST(SvgWriterRoundTrip, StrokeDashesComeBack) {
+  pak::DrawnShape dashed;
+  dashed.subpaths = {{{{10, 10}, {50, 10}}, false}};
+  dashed.stroke = pak::Color{0, 0, 0, 1.0};
+  dashed.dashArray = {4, 2.5};
+  dashed.dashOffset = 1.25;
+  pak::DrawnShape filled = dashed;
+  filled.stroke.reset();
+  filled.fill = pak::Color{0, 0, 0, 1.0};
+  filled.subpaths = {rectangle(60, 60, 70, 70)};
+  const std::string svg = pak::toSvgString(oneGroupDrawing("art", {dashed, filled}));
+  ParsedSvg parsed(svg);
+  auto* first = parsed.root()->first_node("g")->first_node("path");
+  ASSERT_NE(first, nullptr);
+  EXPECT_EQ(attribute(first, "stroke-dasharray"), "4 2.5");
+  EXPECT_EQ(attribute(first, "stroke-dashoffset"), "1.25");
+  EXPECT_EQ(attribute(first->next_sibling("path"), "stroke-dasharray"), "<absent>");
+
+  pak::SvgDocument back = pak::readSvgString(svg, "dashes.svg");
+  ASSERT_EQ(back.shapes.size(), 2u);
+  EXPECT_EQ(back.shapes[0].dashArray, (std::vector<double>{4, 2.5}));
+  EXPECT_DOUBLE_EQ(back.shapes[0].dashOffset, 1.25);
+}
+
 TEST(SvgWriter, CurveToleranceWritesCubicBeziersThatReadBackAsTheSameShape) {
   pak::DrawnShape disc;
   pak::Subpath ring;
