@@ -12,6 +12,8 @@ Drawing packingDrawing(const SceneLayout& layout, const Packing& packing, const 
   drawing.viewBox = layout.viewBox;
   drawing.width = layout.width;
   drawing.height = layout.height;
+  drawing.widthText = layout.widthText;
+  drawing.heightText = layout.heightText;
 
   // A container shape that keeps its paint is drawn as the artist styled it; the others are
   // drawn as outlines, or their fill would hide the elements.

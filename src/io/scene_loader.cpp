@@ -170,6 +170,8 @@ LoadedScene sceneFromDocument(const SvgDocument& document, const SceneOptions& s
   layout.viewBox = document.viewBox;
   layout.width = document.width;
   layout.height = document.height;
+  layout.widthText = document.widthText;
+  layout.heightText = document.heightText;
   layout.fixedMarkup = document.fixedMarkup;
   loaded.warnings = document.warnings;
 

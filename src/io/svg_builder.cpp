@@ -282,8 +282,13 @@ void SvgBuilder::beginDocument(const std::vector<const Drawing*>& drawings) {
     for (const DrawingGroup& group : drawing->groups) collect(group, collect);
   for (const RawMarkup* markup : markups) declareNamespaces(markup->namespaces, true);
   out_ += " version=\"1.1\"";
-  attribute("width", formatNumber(width, precision_));
-  attribute("height", formatNumber(height, precision_));
+  if (!first.widthText.empty() || !first.heightText.empty()) {
+    if (!first.widthText.empty()) attribute("width", first.widthText);
+    if (!first.heightText.empty()) attribute("height", first.heightText);
+  } else {
+    attribute("width", formatNumber(width, precision_));
+    attribute("height", formatNumber(height, precision_));
+  }
   attribute("viewBox", formatNumber(box.min.x, precision_) + " " + formatNumber(box.min.y, precision_) + " " +
                            formatNumber(boxWidth, precision_) + " " + formatNumber(boxHeight, precision_));
   out_ += ">\n";

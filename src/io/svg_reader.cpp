@@ -1783,6 +1783,10 @@ SvgDocument readSvgString(const std::string& text, const std::string& name, cons
     document.viewBox = drawingBounds;
     document.warnings.push_back({name, "no viewBox and no width/height: using the drawing's bounds"});
   }
+  if (state.viewBox || (state.width && state.height)) {
+    if (state.width) document.widthText = trimmedView(attributeOf(root, "width"));
+    if (state.height) document.heightText = trimmedView(attributeOf(root, "height"));
+  }
   document.width = state.width.value_or(document.viewBox.empty() ? 0.0 : document.viewBox.width());
   document.height = state.height.value_or(document.viewBox.empty() ? 0.0 : document.viewBox.height());
 

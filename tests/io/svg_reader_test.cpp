@@ -251,6 +251,20 @@ TEST(SvgReaderUnits, ViewBoxKeepsUserUnitsAndSizeResolvesMillimetres) {
   EXPECT_NEAR(area(filledRegion(document.shapes[0])), 400.0, 1e-9);
 }
 
+// The size as written, for outputs to keep: when it sizes the document (a viewBox, or both
+// sides), not when the drawing's bounds make the box.
+TEST(SvgReaderUnits, SizeIsKeptAsWritten) {
+  SvgDocument mm = read("<rect width=\"1\" height=\"1\"/>", R"~(width="100mm" height="50mm" viewBox="0 0 200 100")~");
+  EXPECT_EQ(mm.widthText, "100mm");
+  EXPECT_EQ(mm.heightText, "50mm");
+  SvgDocument percent = read("<rect width=\"1\" height=\"1\"/>", R"~(width="100%" viewBox="0 0 200 100")~");
+  EXPECT_EQ(percent.widthText, "100%");
+  EXPECT_EQ(percent.heightText, "");
+  SvgDocument noBox = read("<rect width=\"1\" height=\"1\"/>", R"~(width="8.5in")~");
+  EXPECT_EQ(noBox.widthText, "");
+  EXPECT_EQ(read("<rect width=\"1\" height=\"1\"/>", R"~(width="8.5in" height="11in")~").heightText, "11in");
+}
+
 TEST(SvgReaderUnits, SizeWithoutViewBoxDefinesIt) {
   SvgDocument document = read(R"~(<rect x="0" y="0" width="1" height="1"/>)~", R"~(width="10mm" height="2.54cm")~");
   EXPECT_NEAR(document.viewBox.width(), 10 * 96 / 25.4, 1e-9);

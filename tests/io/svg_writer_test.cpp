@@ -102,6 +102,23 @@ TEST(SvgWriter, ExplicitSizeIsKept) {
   EXPECT_EQ(attribute(parsed.root(), "viewBox"), "0 0 200 100");
 }
 
+// A scene's size as written (units and all) wins over the numbers; a side it left out stays out.
+TEST(SvgWriter, SizeAsWrittenIsKept) {
+  pak::Drawing drawing = sampleDrawing();
+  drawing.width = 755.906;
+  drawing.height = 377.953;
+  drawing.widthText = "200mm";
+  drawing.heightText = "100mm";
+  ParsedSvg both(pak::toSvgString(drawing));
+  EXPECT_EQ(attribute(both.root(), "width"), "200mm");
+  EXPECT_EQ(attribute(both.root(), "height"), "100mm");
+  EXPECT_EQ(attribute(both.root(), "viewBox"), "0 0 200 100");
+  drawing.heightText.clear();
+  ParsedSvg one(pak::toSvgString(drawing));
+  EXPECT_EQ(attribute(one.root(), "width"), "200mm");
+  EXPECT_EQ(attribute(one.root(), "height"), "<absent>");
+}
+
 TEST(SvgWriter, GroupsAndPathsKeepStructureAndPaint) {
   ParsedSvg parsed(pak::toSvgString(sampleDrawing()));
   auto* container = parsed.root()->first_node("g");

@@ -32,6 +32,10 @@ struct DrawingGroup {
 struct Drawing {
   Box viewBox;
   double width = 0.0, height = 0.0;  // output size in user units (0: viewBox size)
+  // The size as the scene wrote it ("210mm", "8.5in"): written as it is instead of width and
+  // height when either is given, so a packing opens at the size the artist drew (a side the
+  // scene left out stays out).
+  std::string widthText, heightText;
   std::vector<DrawingGroup> groups;
 };
 

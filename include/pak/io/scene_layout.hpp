@@ -3,6 +3,7 @@
 // coordinate box and size, the container shapes as the artist drew them, and the fixed layer
 // as written. The scene loader reads it with the scene; packingDrawing and flowDrawing draw
 // every packing of that scene on it.
+#include <string>
 #include <vector>
 
 #include "pak/geom/box.hpp"
@@ -22,6 +23,7 @@ struct ContainerShape {
 struct SceneLayout {
   Box viewBox;                       // the document's coordinate box
   double width = 0.0, height = 0.0;  // the document's size in its own user units
+  std::string widthText, heightText; // and as written ("210mm"); "" when it has none (SvgDocument)
   std::vector<ContainerShape> containerShapes;
   std::vector<SvgShape> fixedShapes; // the fixed elements (Scene::fixed) as read
   RawMarkup fixedMarkup;             // the `fixed` layer as written (SVG input): the output copies

@@ -20,6 +20,10 @@ struct SvgDocument {
   std::string file;
   Box viewBox;                       // in user units (viewBox attribute, else 0 0 width height)
   double width = 0.0, height = 0.0;  // in user units after resolving units like mm
+  // The root's width and height as written ("210mm", "8.5in", "100%"), so that outputs keep
+  // the document's size in its own units; "" when absent, or when the drawing's bounds make
+  // the box (no viewBox, not both sizes).
+  std::string widthText, heightText;
   std::vector<std::string> layers;   // names of the layers found, lower-cased, in order
   std::vector<SvgShape> shapes;      // in document order, in viewBox coordinates
   std::vector<Warning> warnings;     // things skipped and why
