@@ -26,10 +26,6 @@ bool sameBox(const std::optional<Box>& a, const std::optional<Box>& b) {
   return !a || (a->min == b->min && a->max == b->max);
 }
 
-bool sameMarkup(const std::optional<RawMarkup>& a, const std::optional<RawMarkup>& b) {
-  if (a.has_value() != b.has_value()) return false;
-  return !a || (a->content == b->content && a->defs == b->defs && a->namespaces == b->namespaces);
-}
 
 // Same paint and the same point counts, so the two `d` strings (and dash lists) have the same
 // commands and SMIL can interpolate between them.
@@ -45,7 +41,7 @@ bool sameShapeStructure(const DrawnShape& a, const DrawnShape& b) {
 
 bool sameGroupStructure(const DrawingGroup& a, const DrawingGroup& b) {
   if (a.id != b.id || a.cssClass != b.cssClass || a.attributes != b.attributes || !sameBox(a.clip, b.clip) ||
-      !sameMarkup(a.markup, b.markup) || a.shapes.size() != b.shapes.size() || a.children.size() != b.children.size())
+      a.markup != b.markup || a.markupReplacesGroup != b.markupReplacesGroup || a.shapes.size() != b.shapes.size() || a.children.size() != b.children.size())
     return false;
   for (std::size_t i = 0; i < a.shapes.size(); ++i)
     if (!sameShapeStructure(a.shapes[i], b.shapes[i])) return false;
@@ -162,8 +158,25 @@ std::string morphingSvg(const std::vector<Drawing>& frames, const AnimationOutpu
   return std::move(builder.text());
 }
 
+// How many groups at the start (`leading`) or the end of every frame are a scene's layer copied
+// whole and the same in all frames.
+std::size_t sharedCopiedLayers(const std::vector<Drawing>& frames, bool leading) {
+  std::size_t count = 0;
+  for (;; ++count) {
+    const DrawingGroup* first = nullptr;
+    for (const Drawing& frame : frames) {
+      const std::size_t size = frame.groups.size();
+      if (count >= size) return count;
+      const DrawingGroup& group = frame.groups[leading ? count : size - 1 - count];
+      if (!group.markupReplacesGroup || (first && !sameGroupStructure(*first, group))) return count;
+      first = &group;
+    }
+  }
+}
+
 // Every frame its own group (a layer in Inkscape), visible from i/n to (i+1)/n of the duration.
-// Ids in the later frames get a "-f<i>" suffix so the document's ids stay unique.
+// Ids in the later frames get a "-f<i>" suffix so the document's ids stay unique; a scene's
+// copied layers, the same in every frame, are written once, below or above the frames.
 std::string flipBookSvg(const std::vector<Drawing>& frames, const AnimationOutputOptions& options) {
   const std::size_t n = frames.size();
   std::vector<const Drawing*> all;
@@ -172,10 +185,15 @@ std::string flipBookSvg(const std::vector<Drawing>& frames, const AnimationOutpu
   builder.beginDocument(all);
   std::string& out = builder.text();
   const std::string repeat = timing(options);
+  const std::size_t below = sharedCopiedLayers(frames, true);
+  std::size_t above = sharedCopiedLayers(frames, false);
+  for (const Drawing& frame : frames) above = std::min(above, frame.groups.size() - below);
+  const std::vector<DrawingGroup>& firstGroups = frames.front().groups;
+  for (std::size_t k = 0; k < below; ++k) builder.writeGroup(firstGroups[k], 1);
   for (std::size_t i = 0; i < n; ++i) {
     const std::string name = animation_frames::frameFileName(i, n, "");
     out += "  <g";
-    builder.attribute("id", name);
+    builder.attribute("id", builder.uniqueId(name));
     builder.attribute("class", "frame");
     builder.attribute("inkscape:groupmode", "layer");
     builder.attribute("inkscape:label", name);
@@ -198,9 +216,12 @@ std::string flipBookSvg(const std::vector<Drawing>& frames, const AnimationOutpu
              keyTimes + "\" values=\"" + values + "\"/>\n";
     }
     builder.idSuffix = i == 0 ? "" : "-f" + std::to_string(i);
-    for (const DrawingGroup& group : frames[i].groups) builder.writeGroup(group, 2);
+    const std::vector<DrawingGroup>& groups = frames[i].groups;
+    for (std::size_t k = below; k + above < groups.size(); ++k) builder.writeGroup(groups[k], 2);
     out += "  </g>\n";
   }
+  builder.idSuffix.clear();
+  for (std::size_t k = firstGroups.size() - above; k < firstGroups.size(); ++k) builder.writeGroup(firstGroups[k], 1);
   builder.endDocument();
   return std::move(out);
 }

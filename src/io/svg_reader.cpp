@@ -237,10 +237,12 @@ struct ReaderState {
   std::optional<Box> viewBox;
   std::optional<double> width, height;
   int topLevelGroups = 0;
+  std::vector<const XmlNode*> topGroupNodes;  // by SvgShape::topGroup
   std::vector<FixedLayerSource> fixedLayers;
+  int currentTopGroup = -1;  // of the element being read: what its warnings are about
 
   void warn(const std::string& where, const std::string& message) {
-    document->warnings.push_back({file + (where.empty() ? "" : ": " + where), message});
+    document->warnings.push_back({file + (where.empty() ? "" : ": " + where), message, currentTopGroup});
   }
   // Where an error is: "file:line: <path id="…">" (the line when the element has one).
   std::string placeOf(const XmlNode* node, const std::string& element) const {
@@ -462,10 +464,17 @@ class NodeContext {
     if (std::string own = attributeOf(node, "data-gap"); !own.empty()) gap_ = std::move(own);
     if (tag_ == "defs") nonRendered_ = true;
     if (tag_ == "g") {
-      if (parent.isRoot_) topGroup_ = state_->topLevelGroups++;
+      if (parent.isRoot_) {
+        topGroup_ = state_->topLevelGroups++;
+        state_->topGroupNodes.push_back(node);
+        SvgTopGroup& top = state_->document->topGroups.emplace_back();
+        top.name = inkscapeLabel(node);
+        if (top.name.empty()) top.name = id_;
+      }
       if (parent.isLayerGroup_) layerGroup_ = parent.childGroups_++;
       enterGroupLayer();
     }
+    state_->currentTopGroup = topGroup_;
     state_->currentElement = describe();
     state_->currentNode = node;
   }
@@ -475,6 +484,7 @@ class NodeContext {
 
   const length_factory_type& length_factory() const { return state_->lengths; }
   void on_exit_element() {
+    state_->currentTopGroup = topGroup_;
     if (fixedLayer_ && !hidden() && !nonRendered_) state_->fixedLayers.push_back({node_, ctm(), inheritedOpacity_});
     if (!hidden() && !nonRendered_) warnUnsupportedEffects();
   }
@@ -713,6 +723,10 @@ class NodeContext {
         layerGroup_ = -1;
         auto& layers = state_->document->layers;
         if (std::find(layers.begin(), layers.end(), name) == layers.end()) layers.push_back(name);
+        if (topGroup_ >= 0) {
+          auto& inTop = state_->document->topGroups[static_cast<std::size_t>(topGroup_)].layers;
+          if (std::find(inTop.begin(), inTop.end(), name) == inTop.end()) inTop.push_back(name);
+        }
       }
     }
   }
@@ -799,6 +813,7 @@ class ShapeContext : public NodeContext {
   void path_exit() {}
 
   void on_exit_element() {
+    state_->currentTopGroup = topGroup_;
     if (!clipPathId_.empty()) {
       // A shape of a <clipPath>: its geometry only (paint does not matter).
       if (hidden() || !style_.visible || subpaths_.empty()) return;
@@ -935,6 +950,7 @@ class UnsupportedContext : public NodeContext {
  public:
   UnsupportedContext(NodeContext& parent, const XmlNode* node) : NodeContext(parent, node) {}
   void on_exit_element() {
+    state_->currentTopGroup = topGroup_;
     if (hidden() || nonRendered_ || !style_.visible) return;
     state_->warn(describe(), "<" + tag_ + "> is not supported; skipped (convert it to paths)");
   }
@@ -1245,7 +1261,9 @@ void forEachElement(XmlNode* root, F&& f) {
   }
 }
 
-void applyStylesheets(rapidxml_ns::xml_document<char>& xml, XmlNode* root) {
+// Returns the elements a rule styled: their source text lacks those colours.
+std::set<const XmlNode*> applyStylesheets(rapidxml_ns::xml_document<char>& xml, XmlNode* root) {
+  std::set<const XmlNode*> styled;
   std::vector<CssRule> rules;
   forEachElement(root, [&](XmlNode* node) {
     if (std::string_view(node->local_name(), node->local_name_size()) != "style") return;
@@ -1255,7 +1273,7 @@ void applyStylesheets(rapidxml_ns::xml_document<char>& xml, XmlNode* root) {
         text.append(child->value(), child->value_size());
     parseStylesheet(text, rules);
   });
-  if (rules.empty()) return;
+  if (rules.empty()) return styled;
   std::stable_sort(rules.begin(), rules.end(),
                    [](const CssRule& a, const CssRule& b) { return a.specificity < b.specificity; });
   forEachElement(root, [&](XmlNode* node) {
@@ -1268,6 +1286,7 @@ void applyStylesheets(rapidxml_ns::xml_document<char>& xml, XmlNode* root) {
           (rule.cssClass.empty() || hasClass(classes, rule.cssClass)))
         style += rule.declarations + ";";
     if (style.empty()) return;
+    styled.insert(node);
     rapidxml_ns::xml_attribute<char>* inline_ = nullptr;
     for (auto* a = node->first_attribute(); a; a = a->next_attribute())
       if (std::string_view(a->name(), a->name_size()) == "style") inline_ = a;
@@ -1279,6 +1298,7 @@ void applyStylesheets(rapidxml_ns::xml_document<char>& xml, XmlNode* root) {
       node->append_attribute(xml.allocate_attribute("style", value, 5, style.size()));
     }
   });
+  return styled;
 }
 
 // rgb() with decimal components, which Inkscape writes, rounded for SVG++ (rgb_components.hpp):
@@ -1554,36 +1574,91 @@ void addNamespacesOf(const XmlNode* subtree, std::map<std::string, std::string>&
   });
 }
 
-// Whether the stylesheet pass rewrote a style attribute in the subtree: the source's bytes
-// would then lose the colours CSS classes gave them.
-bool styledByStylesheet(const SourceText& source, const XmlNode* subtree) {
-  bool styled = false;
-  forEachElement(const_cast<XmlNode*>(subtree), [&](XmlNode* node) {
-    for (auto* a = node->first_attribute(); a; a = a->next_attribute())
-      if (std::string_view(a->name(), a->name_size()) == "style" && source.offsetOf(a->value()) == std::string::npos)
-        styled = true;
+// The prefixes the root declares that a copy's text uses (`prefix:name`): names of elements
+// the reader has replaced since (a <use>, expanded) are in the text only.
+void addRootNamespacesUsedIn(const XmlNode* root, const RawMarkup& markup, std::map<std::string, std::string>& namespaces) {
+  for (auto* a = root->first_attribute(); a; a = a->next_attribute()) {
+    const std::string_view name(a->name(), a->name_size());
+    if (name.substr(0, 6) != "xmlns:" || a->value_size() == 0) continue;
+    const std::string prefix(name.substr(6));
+    if (prefix == "xml" || prefix == "xmlns" || namespaces.count(prefix)) continue;
+    auto uses = [&](const std::string& text) {
+      for (std::size_t at = text.find(prefix + ":"); at != std::string::npos; at = text.find(prefix + ":", at + 1)) {
+        const char before = at == 0 ? ' ' : text[at - 1];
+        if (before == '<' || before == '/' || std::isspace(static_cast<unsigned char>(before))) return true;
+      }
+      return false;
+    };
+    if (uses(markup.content) || std::any_of(markup.definitions.begin(), markup.definitions.end(), uses))
+      namespaces.emplace(prefix, std::string(a->value(), a->value_size()));
+  }
+}
+
+// Whether a stylesheet rule styles an element of the subtree (`styled`: applyStylesheets's):
+// the source's bytes would then lose the colours CSS classes gave them.
+bool styledByStylesheet(const std::set<const XmlNode*>& styled, const XmlNode* subtree) {
+  bool found = false;
+  forEachElement(const_cast<XmlNode*>(subtree), [&](XmlNode* node) { found = found || styled.count(node) > 0; });
+  return found;
+}
+
+using Extent = std::array<std::size_t, 4>;  // SourceText::extent
+using IdIndex = std::map<std::string, const XmlNode*>;
+
+IdIndex elementsById(XmlNode* root) {
+  IdIndex byId;
+  forEachElement(root, [&](XmlNode* node) {
+    const std::string id = attributeOf(node, "id");
+    if (!id.empty()) byId.emplace(id, node);
   });
-  return styled;
+  return byId;
+}
+
+// The definitions `references` points at, and those they reference in turn (a gradient's
+// xlink:href), each once, into markup.definitions; those inside `copied` (the copy's own
+// extents) already travel with it.
+void addDefinitions(RawMarkup& markup, const std::string& references, std::vector<Extent> copied, const IdIndex& byId,
+                    const SourceText& source, std::map<std::string, std::string>& namespaces) {
+  auto isCopied = [&](const Extent& e) {
+    return std::any_of(copied.begin(), copied.end(), [&](const Extent& c) { return e[0] >= c[0] && e[3] <= c[3]; });
+  };
+  std::vector<std::string> pending = referencedIds(references);
+  std::set<std::string> seen;
+  while (!pending.empty()) {
+    const std::string id = pending.back();
+    pending.pop_back();
+    if (!seen.insert(id).second) continue;
+    auto it = byId.find(id);
+    if (it == byId.end()) continue;
+    const Extent extent = source.extent(it->second);
+    if (extent[0] == extent[3] || isCopied(extent)) continue;
+    copied.push_back(extent);
+    std::string text = source.between(extent[0], extent[3]);
+    addNamespacesOf(it->second, namespaces);
+    for (std::string& more : referencedIds(text)) pending.push_back(std::move(more));
+    markup.definitions.push_back(std::move(text));
+  }
 }
 
 // The fixed layers' children as written, wrapped in a <g> that places them as the input did
 // (the layer's transform and those of its ancestors, the ancestors' opacity) and one that
 // keeps the layer's own presentation attributes; the definitions they reference; the
 // namespaces their names use.
-RawMarkup fixedLayerMarkup(ReaderState& state, const SourceText& source, XmlNode* root) {
+RawMarkup fixedLayerMarkup(ReaderState& state, const SourceText& source, const XmlNode* root, const IdIndex& byId,
+                           const std::set<const XmlNode*>& styled) {
   RawMarkup markup;
   if (state.fixedLayers.empty()) return markup;
   std::map<std::string, std::string> namespaces;
-  std::vector<std::array<std::size_t, 4>> copied;  // extents already in the output
+  std::vector<Extent> copied;  // extents already in the output
   std::string references;
   for (const FixedLayerSource& layer : state.fixedLayers) {
-    if (styledByStylesheet(source, layer.node)) {
+    if (styledByStylesheet(styled, layer.node)) {
       state.warn("fixed layer", "styled by a <style> sheet: the output re-draws it instead of copying it");
       return {};
     }
   }
   for (const FixedLayerSource& layer : state.fixedLayers) {
-    const auto extent = source.extent(layer.node);
+    const Extent extent = source.extent(layer.node);
     if (extent[0] == extent[3]) continue;
     copied.push_back(extent);
     const Affine& m = layer.ctm;
@@ -1605,35 +1680,33 @@ RawMarkup fixedLayerMarkup(ReaderState& state, const SourceText& source, XmlNode
     addNamespacesOf(layer.node, namespaces);
   }
   if (markup.content.empty()) return markup;
-
-  // Definitions referenced from the copy, and those they reference in turn (a gradient's
-  // xlink:href), each copied once; those inside the copy already travel with it.
-  std::map<std::string, const XmlNode*> byId;
-  forEachElement(root, [&](XmlNode* node) {
-    const std::string id = attributeOf(node, "id");
-    if (!id.empty()) byId.emplace(id, node);
-  });
-  auto isCopied = [&](const std::array<std::size_t, 4>& e) {
-    return std::any_of(copied.begin(), copied.end(), [&](const auto& c) { return e[0] >= c[0] && e[3] <= c[3]; });
-  };
-  std::vector<std::string> pending = referencedIds(references);
-  std::set<std::string> seen;
-  while (!pending.empty()) {
-    const std::string id = pending.back();
-    pending.pop_back();
-    if (!seen.insert(id).second) continue;
-    auto it = byId.find(id);
-    if (it == byId.end()) continue;
-    const auto extent = source.extent(it->second);
-    if (extent[0] == extent[3] || isCopied(extent)) continue;
-    copied.push_back(extent);
-    const std::string text = source.between(extent[0], extent[3]);
-    markup.defs += (markup.defs.empty() ? "" : "\n") + text;
-    addNamespacesOf(it->second, namespaces);
-    for (std::string& more : referencedIds(text)) pending.push_back(std::move(more));
-  }
+  addDefinitions(markup, references, copied, byId, source, namespaces);
+  addRootNamespacesUsedIn(root, markup, namespaces);
   markup.namespaces.assign(namespaces.begin(), namespaces.end());
   return markup;
+}
+
+// Each top-level group as written, its own tag included: a group at the top of the document
+// has no ancestor that moves or fades it, so its bytes alone draw it where it is.
+void topGroupMarkups(ReaderState& state, const SourceText& source, const XmlNode* root, const IdIndex& byId,
+                     const std::set<const XmlNode*>& styled) {
+  std::vector<SvgTopGroup>& groups = state.document->topGroups;
+  for (std::size_t k = 0; k < groups.size() && k < state.topGroupNodes.size(); ++k) {
+    const XmlNode* node = state.topGroupNodes[k];
+    if (styledByStylesheet(styled, node)) {
+      groups[k].styledBySheet = true;
+      continue;
+    }
+    const Extent extent = source.extent(node);
+    if (extent[0] == extent[3]) continue;
+    RawMarkup& markup = groups[k].markup;
+    markup.content = source.between(extent[0], extent[3]);
+    std::map<std::string, std::string> namespaces;
+    addNamespacesOf(node, namespaces);
+    addDefinitions(markup, markup.content, {extent}, byId, source, namespaces);
+    addRootNamespacesUsedIn(root, markup, namespaces);
+    markup.namespaces.assign(namespaces.begin(), namespaces.end());
+  }
 }
 
 }  // namespace
@@ -1743,7 +1816,7 @@ SvgDocument readSvgString(const std::string& text, const std::string& name, cons
   if (rootName != "svg")
     throw InputError(name, "not an SVG document: the root element is <" + rootName + ">, not <svg>");
   adoptSvgNamespace(root);
-  applyStylesheets(xml, root);
+  const std::set<const XmlNode*> styled = applyStylesheets(xml, root);
   roundRgbComponents(xml, root);
 
   const LineIndex lines(buffer);
@@ -1765,7 +1838,13 @@ SvgDocument readSvgString(const std::string& text, const std::string& name, cons
     }
   }
 
-  document.fixedMarkup = fixedLayerMarkup(state, SourceText{text, buffer}, root);
+  state.currentTopGroup = -1;  // what follows is about the document
+  {
+    const SourceText source{text, buffer};
+    const IdIndex byId = elementsById(root);
+    document.fixedMarkup = fixedLayerMarkup(state, source, root, byId, styled);
+    topGroupMarkups(state, source, root, byId, styled);
+  }
 
   // The document's coordinate box: viewBox, else the size, else the drawing itself.
   Box drawingBounds;
@@ -1795,6 +1874,7 @@ SvgDocument readSvgString(const std::string& text, const std::string& name, cons
   const double tolerance = extent > 0 ? options.flatness * extent : options.flatness;
 
   for (PendingShape& pending : state.shapes) {
+    state.currentTopGroup = pending.shape.topGroup;
     SvgShape shape = std::move(pending.shape);
     // A zero-length subpath (`M4 20h0`, a dot in outline icons) is painted by round and
     // square caps; it is kept as one point.
@@ -1825,6 +1905,7 @@ SvgDocument readSvgString(const std::string& text, const std::string& name, cons
       state.warn(pending.description, "stroke-dasharray under a clip-path: the clipped stroke is drawn solid");
     for (SvgShape& clipped : clippedShapes(shape, *clip, tolerance)) document.shapes.push_back(std::move(clipped));
   }
+  state.currentTopGroup = -1;
   return document;
 }
 

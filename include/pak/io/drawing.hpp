@@ -27,6 +27,9 @@ struct DrawingGroup {
   std::optional<Box> clip = std::nullopt;  // draw only inside this box (an SVG clipPath), e.g. a tile
   // The SVG writer writes this instead of `shapes` (the PNG renderer still draws `shapes`).
   std::optional<RawMarkup> markup = std::nullopt;
+  // The markup is the whole group as the input wrote it, its own <g> included (a scene's
+  // layer, with its id, name and style): written in place of this group's <g>.
+  bool markupReplacesGroup = false;
 };
 
 struct Drawing {
