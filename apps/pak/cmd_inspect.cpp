@@ -77,6 +77,7 @@ json shapeJson(const SvgShape& shape) {
       {"fillRule", shape.fillRule == FillRule::EvenOdd ? "evenodd" : "nonzero"},
       {"stroke", colorJson(shape.stroke)},
       {"strokeWidth", shape.stroke ? json(tidy(shape.strokeWidth)) : json(nullptr)},
+      {"strokeDashArray", json::array()},
       {"opacity", tidy(shape.opacity)},
       {"subpaths", shape.subpaths.size()},
       {"closedSubpaths", closed},
@@ -86,6 +87,8 @@ json shapeJson(const SvgShape& shape) {
       {"paintedArea", tidy(area(paintedRegion(shape)))},
       {"bounds", boxJson(bounds(shape))},
   };
+  if (shape.stroke)
+    for (double length : shape.dashArray) out["strokeDashArray"].push_back(tidy(length));
   return out;
 }
 
@@ -261,8 +264,14 @@ void printShape(std::ostream& out, const json& shape, const std::string& indent)
   } else {
     parts.push_back("no fill");
   }
-  if (!shape["stroke"].is_null())
-    parts.push_back("stroke " + colorText(shape["stroke"]) + " width " + number(shape["strokeWidth"]));
+  if (!shape["stroke"].is_null()) {
+    std::string stroke = "stroke " + colorText(shape["stroke"]) + " width " + number(shape["strokeWidth"]);
+    if (!shape["strokeDashArray"].empty()) {
+      stroke += " dashed";
+      for (const json& length : shape["strokeDashArray"]) stroke += " " + number(length);
+    }
+    parts.push_back(stroke);
+  }
   if (shape["opacity"].get<double>() < 1.0) parts.push_back("opacity " + number(shape["opacity"]));
   std::size_t subpaths = shape["subpaths"].get<std::size_t>();
   std::size_t open = subpaths - shape["closedSubpaths"].get<std::size_t>();

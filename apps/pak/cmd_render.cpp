@@ -107,6 +107,8 @@ int runRender(RenderOptions& options, const CLI::App& command) {
     if (widthGiven && !drawing.viewBox.empty() && drawing.viewBox.width() > 0) {
       drawing.width = options.width;
       drawing.height = options.width * drawing.viewBox.height() / drawing.viewBox.width();
+      drawing.widthText.clear();  // the asked width replaces the input's, units and all
+      drawing.heightText.clear();
     }
     if (background && backgroundGiven) addBackground(drawing, *background);
     writeSvgFile(drawing, options.output);

@@ -42,7 +42,7 @@ Packing animationFrame(const AnimatedPacking& animation, double t) {
     placed.art = element.art;
     std::size_t k = 0;
     for (Shape& shape : placed.art) {
-      shape.strokeWidth *= strokeScale;
+      scaleStroke(shape, strokeScale);
       for (Subpath& sub : shape.subpaths)
         for (Vec2& p : sub.points) p = artPoints[k++];
     }

@@ -60,7 +60,7 @@ void scaleAboutCentre(PlacedElement& e, double factor) {
   for (Vec2& p : e.skin) scale(p);
   for (Vec2& p : e.meshVertices) scale(p);
   for (Shape& shape : e.art) {
-    shape.strokeWidth *= factor;
+    scaleStroke(shape, factor);
     for (Subpath& sub : shape.subpaths)
       for (Vec2& p : sub.points) scale(p);
   }

@@ -223,7 +223,7 @@ std::vector<Shape> bendShapes(const std::vector<Shape>& shapes, const StrokeFram
   std::vector<Shape> out = shapes;
   for (Shape& shape : out) {
     for (Subpath& subpath : shape.subpaths) subpath.points = map.bendPoints(subpath.points, subpath.closed, maxEdge);
-    shape.strokeWidth *= strokeScale;
+    scaleStroke(shape, strokeScale);
   }
   return out;
 }

@@ -44,6 +44,12 @@ Region paintedRegion(const Shape& shape, const ClipOptions& options) {
   return unite(parts, options);
 }
 
+void scaleStroke(Shape& shape, double factor) {
+  shape.strokeWidth *= factor;
+  for (double& length : shape.dashArray) length *= factor;
+  shape.dashOffset *= factor;
+}
+
 Box bounds(const Shape& shape) {
   Box box;
   for (const Subpath& subpath : shape.subpaths)

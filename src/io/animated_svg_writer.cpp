@@ -26,16 +26,12 @@ bool sameBox(const std::optional<Box>& a, const std::optional<Box>& b) {
   return !a || (a->min == b->min && a->max == b->max);
 }
 
-bool sameMarkup(const std::optional<RawMarkup>& a, const std::optional<RawMarkup>& b) {
-  if (a.has_value() != b.has_value()) return false;
-  return !a || (a->content == b->content && a->defs == b->defs && a->namespaces == b->namespaces);
-}
 
-// Same paint and the same point counts, so the two `d` strings have the same commands and
-// SMIL can interpolate between them.
+// Same paint and the same point counts, so the two `d` strings (and dash lists) have the same
+// commands and SMIL can interpolate between them.
 bool sameShapeStructure(const DrawnShape& a, const DrawnShape& b) {
   if (a.subpaths.size() != b.subpaths.size() || a.fill != b.fill || a.stroke != b.stroke ||
-      a.opacity != b.opacity || a.fillRule != b.fillRule || a.id != b.id)
+      a.opacity != b.opacity || a.fillRule != b.fillRule || a.id != b.id || a.dashArray.size() != b.dashArray.size())
     return false;
   for (std::size_t i = 0; i < a.subpaths.size(); ++i)
     if (a.subpaths[i].points.size() != b.subpaths[i].points.size() || a.subpaths[i].closed != b.subpaths[i].closed)
@@ -45,7 +41,7 @@ bool sameShapeStructure(const DrawnShape& a, const DrawnShape& b) {
 
 bool sameGroupStructure(const DrawingGroup& a, const DrawingGroup& b) {
   if (a.id != b.id || a.cssClass != b.cssClass || a.attributes != b.attributes || !sameBox(a.clip, b.clip) ||
-      !sameMarkup(a.markup, b.markup) || a.shapes.size() != b.shapes.size() || a.children.size() != b.children.size())
+      a.markup != b.markup || a.markupReplacesGroup != b.markupReplacesGroup || a.shapes.size() != b.shapes.size() || a.children.size() != b.children.size())
     return false;
   for (std::size_t i = 0; i < a.shapes.size(); ++i)
     if (!sameShapeStructure(a.shapes[i], b.shapes[i])) return false;
@@ -122,14 +118,6 @@ std::string morphingSvg(const std::vector<Drawing>& frames, const AnimationOutpu
       values += ';';
       values += dk;
     }
-    // A stroke keeps its width relative to a growing or shrinking shape: animate it too.
-    std::string widths = formatNumber(shape.strokeWidth, builder.precision());
-    bool widthChanges = false;
-    for (std::size_t k = 1; k < n; ++k) {
-      const std::string wk = formatNumber(shapes[k][index]->strokeWidth, builder.precision());
-      widthChanges = widthChanges || wk != formatNumber(shape.strokeWidth, builder.precision());
-      widths += ';' + wk;
-    }
     std::string text;
     const std::string indent(static_cast<std::size_t>(depth) * 2, ' ');
     if (moves) {
@@ -137,10 +125,30 @@ std::string morphingSvg(const std::vector<Drawing>& frames, const AnimationOutpu
       text += indent + "<animate attributeName=\"d\"" + repeat + " calcMode=\"linear\" keyTimes=\"" + keyTimes +
               "\" values=\"" + values + "\"/>\n";
     }
-    if (widthChanges && shape.stroke) {
-      if (options.loop) widths += ';' + formatNumber(shape.strokeWidth, builder.precision());
-      text += indent + "<animate attributeName=\"stroke-width\"" + repeat + " calcMode=\"linear\" keyTimes=\"" +
-              keyTimes + "\" values=\"" + widths + "\"/>\n";
+    // An attribute written as `valueOf` gives it in each frame, animated when it changes.
+    auto animateStroke = [&](const char* attribute, auto valueOf) {
+      const std::string first = valueOf(shape);
+      std::string all = first;
+      bool changes = false;
+      for (std::size_t k = 1; k < n; ++k) {
+        const std::string vk = valueOf(*shapes[k][index]);
+        changes = changes || vk != first;
+        all += ';' + vk;
+      }
+      if (!changes) return;
+      if (options.loop) all += ';' + first;
+      text += indent + "<animate attributeName=\"" + attribute + "\"" + repeat + " calcMode=\"linear\" keyTimes=\"" +
+              keyTimes + "\" values=\"" + all + "\"/>\n";
+    };
+    // A stroke keeps its width and dashes relative to a growing or shrinking shape: animate them too.
+    if (shape.stroke) {
+      const int precision = builder.precision();
+      animateStroke("stroke-width", [&](const DrawnShape& s) { return formatNumber(s.strokeWidth, precision); });
+      if (!shape.dashArray.empty()) {
+        animateStroke("stroke-dasharray", [&](const DrawnShape& s) { return svg_builder::dashList(s.dashArray, precision); });
+        if (shape.dashOffset != 0.0)
+          animateStroke("stroke-dashoffset", [&](const DrawnShape& s) { return formatNumber(s.dashOffset, precision); });
+      }
     }
     return text;  // empty for a still shape
   };
@@ -150,8 +158,25 @@ std::string morphingSvg(const std::vector<Drawing>& frames, const AnimationOutpu
   return std::move(builder.text());
 }
 
+// How many groups at the start (`leading`) or the end of every frame are a scene's layer copied
+// whole and the same in all frames.
+std::size_t sharedCopiedLayers(const std::vector<Drawing>& frames, bool leading) {
+  std::size_t count = 0;
+  for (;; ++count) {
+    const DrawingGroup* first = nullptr;
+    for (const Drawing& frame : frames) {
+      const std::size_t size = frame.groups.size();
+      if (count >= size) return count;
+      const DrawingGroup& group = frame.groups[leading ? count : size - 1 - count];
+      if (!group.markupReplacesGroup || (first && !sameGroupStructure(*first, group))) return count;
+      first = &group;
+    }
+  }
+}
+
 // Every frame its own group (a layer in Inkscape), visible from i/n to (i+1)/n of the duration.
-// Ids in the later frames get a "-f<i>" suffix so the document's ids stay unique.
+// Ids in the later frames get a "-f<i>" suffix so the document's ids stay unique; a scene's
+// copied layers, the same in every frame, are written once, below or above the frames.
 std::string flipBookSvg(const std::vector<Drawing>& frames, const AnimationOutputOptions& options) {
   const std::size_t n = frames.size();
   std::vector<const Drawing*> all;
@@ -160,10 +185,15 @@ std::string flipBookSvg(const std::vector<Drawing>& frames, const AnimationOutpu
   builder.beginDocument(all);
   std::string& out = builder.text();
   const std::string repeat = timing(options);
+  const std::size_t below = sharedCopiedLayers(frames, true);
+  std::size_t above = sharedCopiedLayers(frames, false);
+  for (const Drawing& frame : frames) above = std::min(above, frame.groups.size() - below);
+  const std::vector<DrawingGroup>& firstGroups = frames.front().groups;
+  for (std::size_t k = 0; k < below; ++k) builder.writeGroup(firstGroups[k], 1);
   for (std::size_t i = 0; i < n; ++i) {
     const std::string name = animation_frames::frameFileName(i, n, "");
     out += "  <g";
-    builder.attribute("id", name);
+    builder.attribute("id", builder.uniqueId(name));
     builder.attribute("class", "frame");
     builder.attribute("inkscape:groupmode", "layer");
     builder.attribute("inkscape:label", name);
@@ -186,9 +216,12 @@ std::string flipBookSvg(const std::vector<Drawing>& frames, const AnimationOutpu
              keyTimes + "\" values=\"" + values + "\"/>\n";
     }
     builder.idSuffix = i == 0 ? "" : "-f" + std::to_string(i);
-    for (const DrawingGroup& group : frames[i].groups) builder.writeGroup(group, 2);
+    const std::vector<DrawingGroup>& groups = frames[i].groups;
+    for (std::size_t k = below; k + above < groups.size(); ++k) builder.writeGroup(groups[k], 2);
     out += "  </g>\n";
   }
+  builder.idSuffix.clear();
+  for (std::size_t k = firstGroups.size() - above; k < firstGroups.size(); ++k) builder.writeGroup(firstGroups[k], 1);
   builder.endDocument();
   return std::move(out);
 }

@@ -25,6 +25,8 @@ Drawing drawingFromDocument(const SvgDocument& document) {
   drawing.viewBox = document.viewBox.empty() ? bounds(document.shapes) : document.viewBox;
   drawing.width = document.width;
   drawing.height = document.height;
+  drawing.widthText = document.widthText;
+  drawing.heightText = document.heightText;
   // One group per layer, in the order layers first appear; shapes keep their document
   // order inside their layer. Shapes outside any layer share a group without id.
   for (const SvgShape& shape : document.shapes) {

@@ -6,12 +6,32 @@
 #include "pak/repulsion/tiling.hpp"
 
 namespace pak {
+namespace {
+
+// A scene's own layer: copied as written (the PNG previews draw what Pak read of it), else
+// re-drawn as a layer of the same name.
+DrawingGroup sceneLayerGroup(const SceneLayer& layer) {
+  DrawingGroup group;
+  group.shapes = drawnShapes(layer.shapes);
+  if (!layer.markup.empty()) {
+    group.markup = layer.markup;
+    group.markupReplacesGroup = true;
+  } else if (!layer.name.empty()) {
+    group.attributes = {{"inkscape:groupmode", "layer"}, {"inkscape:label", layer.name}};
+  }
+  return group;
+}
+
+}  // namespace
 
 Drawing packingDrawing(const SceneLayout& layout, const Packing& packing, const PackingDrawingOptions& options) {
   Drawing drawing;
   drawing.viewBox = layout.viewBox;
   drawing.width = layout.width;
   drawing.height = layout.height;
+  drawing.widthText = layout.widthText;
+  drawing.heightText = layout.heightText;
+  for (const SceneLayer& layer : layout.layersBelow) drawing.groups.push_back(sceneLayerGroup(layer));
 
   // A container shape that keeps its paint is drawn as the artist styled it; the others are
   // drawn as outlines, or their fill would hide the elements.
@@ -42,6 +62,7 @@ Drawing packingDrawing(const SceneLayout& layout, const Packing& packing, const 
   }
   if (isTiled(packing.tile)) addPeriodicClones(elements, packing.tile);  // one seamless tile
   drawing.groups.push_back(std::move(elements));
+  for (const SceneLayer& layer : layout.layersAbove) drawing.groups.push_back(sceneLayerGroup(layer));
 
   if (options.debugLayers) {
     // Line widths relative to the canonical frame so they read at any input scale.

@@ -92,6 +92,7 @@ void drawShape(cairo_t* context, const Shape& shape) {
                                  : shape.lineJoin == StrokeJoin::Bevel ? CAIRO_LINE_JOIN_BEVEL
                                                                        : CAIRO_LINE_JOIN_ROUND);
     cairo_set_miter_limit(context, shape.miterLimit);
+    cairo_set_dash(context, shape.dashArray.data(), static_cast<int>(shape.dashArray.size()), shape.dashOffset);
     setColor(context, *shape.stroke, paintOpacity);
     cairo_stroke(context);
   }

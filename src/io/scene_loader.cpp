@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "io/scene_layers.hpp"
 #include "pak/error.hpp"
 #include "pak/io/packing_reader.hpp"
 #include "pak/io/path_reader.hpp"
@@ -170,6 +171,8 @@ LoadedScene sceneFromDocument(const SvgDocument& document, const SceneOptions& s
   layout.viewBox = document.viewBox;
   layout.width = document.width;
   layout.height = document.height;
+  layout.widthText = document.widthText;
+  layout.heightText = document.heightText;
   layout.fixedMarkup = document.fixedMarkup;
   loaded.warnings = document.warnings;
 
@@ -268,6 +271,7 @@ LoadedScene sceneFromDocument(const SvgDocument& document, const SceneOptions& s
       scene.containers.push_back(std::move(part));
     }
   }
+  if (hasContainerLayer) addSceneLayers(document, containerLayer, layout, loaded.warnings);
   // A document always has a box (else it has no shapes and so no container); a hand-made one
   // may not.
   if (layout.viewBox.empty()) layout.viewBox = bounds(scene.container);

@@ -20,6 +20,25 @@ namespace {
 // Opacities with three decimals are finer than 8-bit colour; clamp to SVG's [0, 1].
 std::string formatOpacity(double opacity) { return formatNumber(std::clamp(opacity, 0.0, 1.0), 3); }
 
+// The values of the id attributes in copied markup, in order (` id="…"` or `id='…'`, with
+// any space around the `=`; `data-id` and `inkscape:id` are other attributes).
+std::vector<std::string> idsIn(const std::string& markup) {
+  std::vector<std::string> ids;
+  for (std::size_t at = markup.find("id"); at != std::string::npos; at = markup.find("id", at + 2)) {
+    if (at == 0 || !std::isspace(static_cast<unsigned char>(markup[at - 1]))) continue;
+    std::size_t i = at + 2;
+    while (i < markup.size() && std::isspace(static_cast<unsigned char>(markup[i]))) ++i;
+    if (i >= markup.size() || markup[i] != '=') continue;
+    ++i;
+    while (i < markup.size() && std::isspace(static_cast<unsigned char>(markup[i]))) ++i;
+    if (i >= markup.size() || (markup[i] != '"' && markup[i] != '\'')) continue;
+    const std::size_t end = markup.find(markup[i], i + 1);
+    if (end == std::string::npos) break;
+    ids.push_back(markup.substr(i + 1, end - i - 1));
+  }
+  return ids;
+}
+
 }  // namespace
 
 // Escapes text for a double-quoted XML attribute. Characters XML 1.0 forbids (most control
@@ -72,6 +91,15 @@ std::string formatNumber(double value, int precision) {
     if (text.back() == '.') text.pop_back();
   }
   if (text == "-0") text = "0";
+  return text;
+}
+
+std::string dashList(const std::vector<double>& dashes, int precision) {
+  std::string text;
+  for (double length : dashes) {
+    if (!text.empty()) text += ' ';
+    text += formatNumber(length, precision);
+  }
   return text;
 }
 
@@ -142,11 +170,33 @@ Box drawingBox(const Drawing& drawing) {
   return box;
 }
 
+std::string SvgBuilder::uniqueId(const std::string& wanted) {
+  std::string id = wanted;
+  for (int n = 2; takenIds_.count(id); ++n) id = wanted + "-" + std::to_string(n);
+  takenIds_.insert(id);
+  return id;
+}
+
 void SvgBuilder::writeGroup(const DrawingGroup& group, int depth) {
+  if (group.markup && group.markupReplacesGroup) {
+    if (group.markup->empty()) return;
+    // As the input wrote it; a prefix the root binds to another URI is bound again around it.
+    indent(depth);
+    const std::size_t start = out_.size();
+    out_ += "<g";
+    declareNamespaces(group.markup->namespaces, false);
+    const bool wrapped = out_.size() > start + 2;
+    if (wrapped) out_ += ">";
+    else out_.resize(start);
+    out_ += group.markup->content;
+    if (wrapped) out_ += "</g>";
+    out_ += '\n';
+    return;
+  }
   std::string clipId;
   if (group.clip) {
     // A rectangle clip path just before the group that uses it.
-    clipId = "pak-clip-" + std::to_string(++clipCount_);
+    clipId = uniqueId("pak-clip-" + std::to_string(++clipCount_));
     const Box& c = *group.clip;
     indent(depth);
     out_ += "<clipPath";
@@ -161,7 +211,7 @@ void SvgBuilder::writeGroup(const DrawingGroup& group, int depth) {
   indent(depth);
   out_ += "<g";
   if (!clipId.empty()) attribute("clip-path", "url(#" + clipId + ")");
-  if (!group.id.empty()) attribute("id", group.id + idSuffix);
+  if (!group.id.empty()) attribute("id", uniqueId(group.id + idSuffix));
   if (!group.cssClass.empty()) attribute("class", group.cssClass);
   if (depth == 1 && !group.id.empty()) {
     // Top-level groups open as layers in Inkscape, named like the reader expects.
@@ -193,7 +243,7 @@ void SvgBuilder::writeShape(const DrawnShape& shape, int depth) {
   if (d.empty()) return;  // nothing to draw; an empty d is an SVG error
   indent(depth);
   out_ += "<path";
-  if (!shape.id.empty()) attribute("id", shape.id + idSuffix);
+  if (!shape.id.empty()) attribute("id", uniqueId(shape.id + idSuffix));
   attribute("d", d);
   if (shape.fill) {
     attribute("fill", hexColor(*shape.fill));
@@ -213,6 +263,10 @@ void SvgBuilder::writeShape(const DrawnShape& shape, int depth) {
       attribute("stroke-linejoin", shape.lineJoin == StrokeJoin::Round ? "round" : "bevel");
     else if (shape.miterLimit != 4.0)
       attribute("stroke-miterlimit", formatNumber(shape.miterLimit, precision_));
+    if (!shape.dashArray.empty()) {
+      attribute("stroke-dasharray", dashList(shape.dashArray, precision_));
+      if (shape.dashOffset != 0.0) attribute("stroke-dashoffset", formatNumber(shape.dashOffset, precision_));
+    }
   }
   if (shape.opacity < 1.0) attribute("opacity", formatOpacity(shape.opacity));
   std::string children = shapeChildren ? shapeChildren(shape, d, depth + 1) : std::string();
@@ -264,7 +318,8 @@ void SvgBuilder::beginDocument(const std::vector<const Drawing*>& drawings) {
   out_ += "<svg xmlns=\"http://www.w3.org/2000/svg\"";
   out_ += " xmlns:inkscape=\"http://www.inkscape.org/namespaces/inkscape\"";
   rootNamespaces_["inkscape"] = "http://www.inkscape.org/namespaces/inkscape";
-  // Copied markup (a scene's fixed layer): its namespaces on the root, its definitions in <defs>.
+  // Copied markup (a scene's fixed and other layers): its namespaces on the root, its
+  // definitions in <defs>.
   std::vector<const RawMarkup*> markups;
   auto collect = [&](const DrawingGroup& group, auto& self) -> void {
     if (group.markup && !group.markup->empty()) markups.push_back(&*group.markup);
@@ -274,21 +329,33 @@ void SvgBuilder::beginDocument(const std::vector<const Drawing*>& drawings) {
     for (const DrawingGroup& group : drawing->groups) collect(group, collect);
   for (const RawMarkup* markup : markups) declareNamespaces(markup->namespaces, true);
   out_ += " version=\"1.1\"";
-  attribute("width", formatNumber(width, precision_));
-  attribute("height", formatNumber(height, precision_));
+  if (!first.widthText.empty() || !first.heightText.empty()) {
+    if (!first.widthText.empty()) attribute("width", first.widthText);
+    if (!first.heightText.empty()) attribute("height", first.heightText);
+  } else {
+    attribute("width", formatNumber(width, precision_));
+    attribute("height", formatNumber(height, precision_));
+  }
   attribute("viewBox", formatNumber(box.min.x, precision_) + " " + formatNumber(box.min.y, precision_) + " " +
                            formatNumber(boxWidth, precision_) + " " + formatNumber(boxHeight, precision_));
   out_ += ">\n";
-  std::vector<const std::string*> written;  // the same <defs> (every frame of an animation) once
+  // Copied markup keeps its ids: Pak's own give way (uniqueId). A definition is written once,
+  // and not at all when a copy holds it already (the same file's element, copied twice).
+  for (const RawMarkup* markup : markups)
+    for (std::string& id : idsIn(markup->content)) takenIds_.insert(std::move(id));
   for (const RawMarkup* markup : markups) {
-    if (markup->defs.empty()) continue;
-    if (std::any_of(written.begin(), written.end(), [&](const std::string* d) { return *d == markup->defs; }))
-      continue;
-    written.push_back(&markup->defs);
+    std::string defs;
+    for (const std::string& definition : markup->definitions) {
+      const std::vector<std::string> ids = idsIn(definition);
+      if (ids.empty() || takenIds_.count(ids.front())) continue;
+      takenIds_.insert(ids.begin(), ids.end());
+      defs += (defs.empty() ? "" : "\n") + definition;
+    }
+    if (defs.empty()) continue;
     out_ += "  <defs";
     declareNamespaces(markup->namespaces, false);
     out_ += ">\n";
-    out_ += markup->defs;
+    out_ += defs;
     out_ += "\n  </defs>\n";
   }
 }

@@ -3,6 +3,7 @@
 // animated one (animated_svg_writer.cpp), so both write the same groups, ids, classes and paint.
 #include <functional>
 #include <map>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -20,6 +21,8 @@ bool isXmlName(const std::string& name);
 // InputError for a non-finite value.
 std::string formatNumber(double value, int precision);
 std::string hexColor(const Color& color);
+// A stroke-dasharray value: the lengths with `precision` decimals, separated by spaces.
+std::string dashList(const std::vector<double>& dashes, int precision);
 // The `d` of a shape: M/L/Z with line segments, or cubic Béziers fitted within curveTolerance > 0.
 // `stats`, when given, counts its points and takes the fits' largest deviation into account.
 std::string pathData(const Shape& shape, int precision, double curveTolerance, SvgPathStats* stats = nullptr);
@@ -45,6 +48,9 @@ class SvgBuilder {
   void endDocument() { out_ += "</svg>\n"; }
   void writeGroup(const DrawingGroup& group, int depth);
   void writeShape(const DrawnShape& shape, int depth);
+  // `wanted`, or wanted-2, wanted-3 … when the document already has that id (copied markup
+  // keeps its own ids, so Pak's give way); taken from then on.
+  std::string uniqueId(const std::string& wanted);
 
   void attribute(const std::string& name, const std::string& value);
   void indent(int depth) { out_.append(static_cast<std::size_t>(depth) * 2, ' '); }
@@ -59,6 +65,7 @@ class SvgBuilder {
   int clipCount_ = 0;
   std::string out_;
   std::map<std::string, std::string> rootNamespaces_;  // prefix -> URI bound on the root
+  std::set<std::string> takenIds_;                      // ids already in the document
 };
 
 }  // namespace pak::svg_builder

@@ -138,6 +138,8 @@ struct Style {
   StrokeCap lineCap = StrokeCap::Butt;
   StrokeJoin lineJoin = StrokeJoin::Miter;
   double miterLimit = 4.0;
+  std::vector<double> dashArray;  // empty: solid
+  double dashOffset = 0.0;
   FillRule clipRule = FillRule::NonZero;
   bool visible = true;
   std::uint32_t color = 0x000000;  // the `color` property, used by currentColor
@@ -235,10 +237,12 @@ struct ReaderState {
   std::optional<Box> viewBox;
   std::optional<double> width, height;
   int topLevelGroups = 0;
+  std::vector<const XmlNode*> topGroupNodes;  // by SvgShape::topGroup
   std::vector<FixedLayerSource> fixedLayers;
+  int currentTopGroup = -1;  // of the element being read: what its warnings are about
 
   void warn(const std::string& where, const std::string& message) {
-    document->warnings.push_back({file + (where.empty() ? "" : ": " + where), message});
+    document->warnings.push_back({file + (where.empty() ? "" : ": " + where), message, currentTopGroup});
   }
   // Where an error is: "file:line: <path id="…">" (the line when the element has one).
   std::string placeOf(const XmlNode* node, const std::string& element) const {
@@ -315,7 +319,7 @@ struct ErrorPolicy {
     return true;
   }
   template <class Context, class AttributeTag, class Value>
-  static bool parse_failed(const Context&, AttributeTag, const Value& value) {
+  static bool parse_failed(const Context& context, AttributeTag, const Value& value) {
     const std::string name = svgpp::attribute_name<char>::get<AttributeTag>();
     std::string text = toString(value);
     if (text.size() > 80) text = text.substr(0, 77) + "...";
@@ -327,6 +331,8 @@ struct ErrorPolicy {
                                   (looksNonFinite(text) ? "contains a non-finite number (NaN or infinity)"
                                                         : "cannot be parsed"));
     }
+    if constexpr (std::is_same_v<AttributeTag, tag::attribute::stroke_dasharray> && std::is_base_of_v<NodeContext, Context>)
+      const_cast<Context&>(context).rejectDashArray();
     if (currentReader)
       currentReader->warn(where, "ignored " + name + "=\"" + text + "\" (cannot be parsed)");
     return true;
@@ -409,7 +415,6 @@ constexpr UnsupportedEffect kUnsupportedEffects[] = {
     {"marker-mid", "markers are not supported; not drawn"},
     {"marker-end", "markers are not supported; not drawn"},
     {"mix-blend-mode", "mix-blend-mode is not supported; blended normally"},
-    {"stroke-dasharray", "stroke-dasharray is not applied; the stroke is drawn solid"},
 };
 
 class NodeContext {
@@ -459,10 +464,17 @@ class NodeContext {
     if (std::string own = attributeOf(node, "data-gap"); !own.empty()) gap_ = std::move(own);
     if (tag_ == "defs") nonRendered_ = true;
     if (tag_ == "g") {
-      if (parent.isRoot_) topGroup_ = state_->topLevelGroups++;
+      if (parent.isRoot_) {
+        topGroup_ = state_->topLevelGroups++;
+        state_->topGroupNodes.push_back(node);
+        SvgTopGroup& top = state_->document->topGroups.emplace_back();
+        top.name = inkscapeLabel(node);
+        if (top.name.empty()) top.name = id_;
+      }
       if (parent.isLayerGroup_) layerGroup_ = parent.childGroups_++;
       enterGroupLayer();
     }
+    state_->currentTopGroup = topGroup_;
     state_->currentElement = describe();
     state_->currentNode = node;
   }
@@ -472,6 +484,7 @@ class NodeContext {
 
   const length_factory_type& length_factory() const { return state_->lengths; }
   void on_exit_element() {
+    state_->currentTopGroup = topGroup_;
     if (fixedLayer_ && !hidden() && !nonRendered_) state_->fixedLayers.push_back({node_, ctm(), inheritedOpacity_});
     if (!hidden() && !nonRendered_) warnUnsupportedEffects();
   }
@@ -587,6 +600,35 @@ class NodeContext {
     if (std::isfinite(v) && v >= 1.0) style_.miterLimit = v;
     else state_->warn(describe(), "ignored stroke-miterlimit " + formatNumber(v) + " (must be at least 1)");
   }
+  // Dashes as SVG reads them: an odd count repeats to an even one; all zeros is solid; a
+  // negative length is an error, and the property is then ignored.
+  void set(tag::attribute::stroke_dasharray, tag::value::none) { style_.dashArray.clear(); }
+  void set(tag::attribute::stroke_dasharray, tag::value::inherit) {}
+  template <class Range>
+  void set(tag::attribute::stroke_dasharray, const Range& lengths) {
+    dashBeforeSet_ = style_.dashArray;
+    std::vector<double> dashes(boost::begin(lengths), boost::end(lengths));
+    double sum = 0.0;
+    for (double length : dashes) {
+      if (!std::isfinite(length) || length < 0.0) {
+        state_->warn(describe(), "ignored stroke-dasharray with the length " + formatNumber(length) +
+                                     " (lengths must be finite and not negative)");
+        return;
+      }
+      sum += length;
+    }
+    if (!(sum > 0.0)) dashes.clear();
+    if (dashes.size() % 2 == 1) {
+      const std::vector<double> once = dashes;
+      dashes.insert(dashes.end(), once.begin(), once.end());
+    }
+    style_.dashArray = std::move(dashes);
+  }
+  // SVG++ reports a list it could not parse after handing over what it read: back to before.
+  void rejectDashArray() { style_.dashArray = dashBeforeSet_; }
+  void set(tag::attribute::stroke_dashoffset, double v) {
+    if (std::isfinite(v)) style_.dashOffset = v;
+  }
   void set(tag::attribute::clip_rule, tag::value::nonzero) { style_.clipRule = FillRule::NonZero; }
   void set(tag::attribute::clip_rule, tag::value::evenodd) { style_.clipRule = FillRule::EvenOdd; }
   void set(tag::attribute::fill_rule, tag::value::nonzero) { style_.fillRule = FillRule::NonZero; }
@@ -647,6 +689,7 @@ class NodeContext {
   std::vector<ClipUse> clips_;  // clip paths of the ancestors
   std::string ownClip_;         // this element's clip-path id ("" if none)
   std::string clipPathId_;      // inside <clipPath id=…>: its id
+  std::vector<double> dashBeforeSet_;  // see rejectDashArray
 
   // The id of clip-path="url(#id)"; "" for none or anything else.
   static std::string clipReference(const std::string& value) {
@@ -680,6 +723,10 @@ class NodeContext {
         layerGroup_ = -1;
         auto& layers = state_->document->layers;
         if (std::find(layers.begin(), layers.end(), name) == layers.end()) layers.push_back(name);
+        if (topGroup_ >= 0) {
+          auto& inTop = state_->document->topGroups[static_cast<std::size_t>(topGroup_)].layers;
+          if (std::find(inTop.begin(), inTop.end(), name) == inTop.end()) inTop.push_back(name);
+        }
       }
     }
   }
@@ -766,6 +813,7 @@ class ShapeContext : public NodeContext {
   void path_exit() {}
 
   void on_exit_element() {
+    state_->currentTopGroup = topGroup_;
     if (!clipPathId_.empty()) {
       // A shape of a <clipPath>: its geometry only (paint does not matter).
       if (hidden() || !style_.visible || subpaths_.empty()) return;
@@ -786,12 +834,15 @@ class ShapeContext : public NodeContext {
     mapAll(m, subpaths_);
     pending.subpaths = std::move(subpaths_);
     SvgShape& shape = pending.shape;
-    shape.strokeWidth = style_.strokeWidth * m.lengthScale();
+    shape.strokeWidth = style_.strokeWidth;
     shape.opacity = effectiveOpacity();
     shape.fillRule = style_.fillRule;
     shape.lineCap = style_.lineCap;
     shape.lineJoin = style_.lineJoin;
     shape.miterLimit = style_.miterLimit;
+    shape.dashArray = style_.dashArray;
+    shape.dashOffset = style_.dashOffset;
+    scaleStroke(shape, m.lengthScale());
     shape.id = id_;
     shape.tag = tag_;
     shape.line = state_->lines->lineOf(node_);
@@ -899,6 +950,7 @@ class UnsupportedContext : public NodeContext {
  public:
   UnsupportedContext(NodeContext& parent, const XmlNode* node) : NodeContext(parent, node) {}
   void on_exit_element() {
+    state_->currentTopGroup = topGroup_;
     if (hidden() || nonRendered_ || !style_.visible) return;
     state_->warn(describe(), "<" + tag_ + "> is not supported; skipped (convert it to paths)");
   }
@@ -975,7 +1027,8 @@ using StyleAttributes =
                        tag::attribute::fill_opacity, tag::attribute::stroke_opacity,
                        tag::attribute::opacity, tag::attribute::stroke_width, tag::attribute::fill_rule,
                        tag::attribute::stroke_linecap, tag::attribute::stroke_linejoin,
-                       tag::attribute::stroke_miterlimit, tag::attribute::clip_rule, tag::attribute::display, tag::attribute::visibility, tag::attribute::color>;
+                       tag::attribute::stroke_miterlimit, tag::attribute::stroke_dasharray,
+                       tag::attribute::stroke_dashoffset, tag::attribute::clip_rule, tag::attribute::display, tag::attribute::visibility, tag::attribute::color>;
 
 using StructureAttributes = boost::mpl::vector<
     boost::mpl::pair<tag::element::svg, tag::attribute::viewBox>,
@@ -1208,7 +1261,9 @@ void forEachElement(XmlNode* root, F&& f) {
   }
 }
 
-void applyStylesheets(rapidxml_ns::xml_document<char>& xml, XmlNode* root) {
+// Returns the elements a rule styled: their source text lacks those colours.
+std::set<const XmlNode*> applyStylesheets(rapidxml_ns::xml_document<char>& xml, XmlNode* root) {
+  std::set<const XmlNode*> styled;
   std::vector<CssRule> rules;
   forEachElement(root, [&](XmlNode* node) {
     if (std::string_view(node->local_name(), node->local_name_size()) != "style") return;
@@ -1218,7 +1273,7 @@ void applyStylesheets(rapidxml_ns::xml_document<char>& xml, XmlNode* root) {
         text.append(child->value(), child->value_size());
     parseStylesheet(text, rules);
   });
-  if (rules.empty()) return;
+  if (rules.empty()) return styled;
   std::stable_sort(rules.begin(), rules.end(),
                    [](const CssRule& a, const CssRule& b) { return a.specificity < b.specificity; });
   forEachElement(root, [&](XmlNode* node) {
@@ -1231,6 +1286,7 @@ void applyStylesheets(rapidxml_ns::xml_document<char>& xml, XmlNode* root) {
           (rule.cssClass.empty() || hasClass(classes, rule.cssClass)))
         style += rule.declarations + ";";
     if (style.empty()) return;
+    styled.insert(node);
     rapidxml_ns::xml_attribute<char>* inline_ = nullptr;
     for (auto* a = node->first_attribute(); a; a = a->next_attribute())
       if (std::string_view(a->name(), a->name_size()) == "style") inline_ = a;
@@ -1242,6 +1298,7 @@ void applyStylesheets(rapidxml_ns::xml_document<char>& xml, XmlNode* root) {
       node->append_attribute(xml.allocate_attribute("style", value, 5, style.size()));
     }
   });
+  return styled;
 }
 
 // rgb() with decimal components, which Inkscape writes, rounded for SVG++ (rgb_components.hpp):
@@ -1517,36 +1574,91 @@ void addNamespacesOf(const XmlNode* subtree, std::map<std::string, std::string>&
   });
 }
 
-// Whether the stylesheet pass rewrote a style attribute in the subtree: the source's bytes
-// would then lose the colours CSS classes gave them.
-bool styledByStylesheet(const SourceText& source, const XmlNode* subtree) {
-  bool styled = false;
-  forEachElement(const_cast<XmlNode*>(subtree), [&](XmlNode* node) {
-    for (auto* a = node->first_attribute(); a; a = a->next_attribute())
-      if (std::string_view(a->name(), a->name_size()) == "style" && source.offsetOf(a->value()) == std::string::npos)
-        styled = true;
+// The prefixes the root declares that a copy's text uses (`prefix:name`): names of elements
+// the reader has replaced since (a <use>, expanded) are in the text only.
+void addRootNamespacesUsedIn(const XmlNode* root, const RawMarkup& markup, std::map<std::string, std::string>& namespaces) {
+  for (auto* a = root->first_attribute(); a; a = a->next_attribute()) {
+    const std::string_view name(a->name(), a->name_size());
+    if (name.substr(0, 6) != "xmlns:" || a->value_size() == 0) continue;
+    const std::string prefix(name.substr(6));
+    if (prefix == "xml" || prefix == "xmlns" || namespaces.count(prefix)) continue;
+    auto uses = [&](const std::string& text) {
+      for (std::size_t at = text.find(prefix + ":"); at != std::string::npos; at = text.find(prefix + ":", at + 1)) {
+        const char before = at == 0 ? ' ' : text[at - 1];
+        if (before == '<' || before == '/' || std::isspace(static_cast<unsigned char>(before))) return true;
+      }
+      return false;
+    };
+    if (uses(markup.content) || std::any_of(markup.definitions.begin(), markup.definitions.end(), uses))
+      namespaces.emplace(prefix, std::string(a->value(), a->value_size()));
+  }
+}
+
+// Whether a stylesheet rule styles an element of the subtree (`styled`: applyStylesheets's):
+// the source's bytes would then lose the colours CSS classes gave them.
+bool styledByStylesheet(const std::set<const XmlNode*>& styled, const XmlNode* subtree) {
+  bool found = false;
+  forEachElement(const_cast<XmlNode*>(subtree), [&](XmlNode* node) { found = found || styled.count(node) > 0; });
+  return found;
+}
+
+using Extent = std::array<std::size_t, 4>;  // SourceText::extent
+using IdIndex = std::map<std::string, const XmlNode*>;
+
+IdIndex elementsById(XmlNode* root) {
+  IdIndex byId;
+  forEachElement(root, [&](XmlNode* node) {
+    const std::string id = attributeOf(node, "id");
+    if (!id.empty()) byId.emplace(id, node);
   });
-  return styled;
+  return byId;
+}
+
+// The definitions `references` points at, and those they reference in turn (a gradient's
+// xlink:href), each once, into markup.definitions; those inside `copied` (the copy's own
+// extents) already travel with it.
+void addDefinitions(RawMarkup& markup, const std::string& references, std::vector<Extent> copied, const IdIndex& byId,
+                    const SourceText& source, std::map<std::string, std::string>& namespaces) {
+  auto isCopied = [&](const Extent& e) {
+    return std::any_of(copied.begin(), copied.end(), [&](const Extent& c) { return e[0] >= c[0] && e[3] <= c[3]; });
+  };
+  std::vector<std::string> pending = referencedIds(references);
+  std::set<std::string> seen;
+  while (!pending.empty()) {
+    const std::string id = pending.back();
+    pending.pop_back();
+    if (!seen.insert(id).second) continue;
+    auto it = byId.find(id);
+    if (it == byId.end()) continue;
+    const Extent extent = source.extent(it->second);
+    if (extent[0] == extent[3] || isCopied(extent)) continue;
+    copied.push_back(extent);
+    std::string text = source.between(extent[0], extent[3]);
+    addNamespacesOf(it->second, namespaces);
+    for (std::string& more : referencedIds(text)) pending.push_back(std::move(more));
+    markup.definitions.push_back(std::move(text));
+  }
 }
 
 // The fixed layers' children as written, wrapped in a <g> that places them as the input did
 // (the layer's transform and those of its ancestors, the ancestors' opacity) and one that
 // keeps the layer's own presentation attributes; the definitions they reference; the
 // namespaces their names use.
-RawMarkup fixedLayerMarkup(ReaderState& state, const SourceText& source, XmlNode* root) {
+RawMarkup fixedLayerMarkup(ReaderState& state, const SourceText& source, const XmlNode* root, const IdIndex& byId,
+                           const std::set<const XmlNode*>& styled) {
   RawMarkup markup;
   if (state.fixedLayers.empty()) return markup;
   std::map<std::string, std::string> namespaces;
-  std::vector<std::array<std::size_t, 4>> copied;  // extents already in the output
+  std::vector<Extent> copied;  // extents already in the output
   std::string references;
   for (const FixedLayerSource& layer : state.fixedLayers) {
-    if (styledByStylesheet(source, layer.node)) {
+    if (styledByStylesheet(styled, layer.node)) {
       state.warn("fixed layer", "styled by a <style> sheet: the output re-draws it instead of copying it");
       return {};
     }
   }
   for (const FixedLayerSource& layer : state.fixedLayers) {
-    const auto extent = source.extent(layer.node);
+    const Extent extent = source.extent(layer.node);
     if (extent[0] == extent[3]) continue;
     copied.push_back(extent);
     const Affine& m = layer.ctm;
@@ -1568,35 +1680,33 @@ RawMarkup fixedLayerMarkup(ReaderState& state, const SourceText& source, XmlNode
     addNamespacesOf(layer.node, namespaces);
   }
   if (markup.content.empty()) return markup;
-
-  // Definitions referenced from the copy, and those they reference in turn (a gradient's
-  // xlink:href), each copied once; those inside the copy already travel with it.
-  std::map<std::string, const XmlNode*> byId;
-  forEachElement(root, [&](XmlNode* node) {
-    const std::string id = attributeOf(node, "id");
-    if (!id.empty()) byId.emplace(id, node);
-  });
-  auto isCopied = [&](const std::array<std::size_t, 4>& e) {
-    return std::any_of(copied.begin(), copied.end(), [&](const auto& c) { return e[0] >= c[0] && e[3] <= c[3]; });
-  };
-  std::vector<std::string> pending = referencedIds(references);
-  std::set<std::string> seen;
-  while (!pending.empty()) {
-    const std::string id = pending.back();
-    pending.pop_back();
-    if (!seen.insert(id).second) continue;
-    auto it = byId.find(id);
-    if (it == byId.end()) continue;
-    const auto extent = source.extent(it->second);
-    if (extent[0] == extent[3] || isCopied(extent)) continue;
-    copied.push_back(extent);
-    const std::string text = source.between(extent[0], extent[3]);
-    markup.defs += (markup.defs.empty() ? "" : "\n") + text;
-    addNamespacesOf(it->second, namespaces);
-    for (std::string& more : referencedIds(text)) pending.push_back(std::move(more));
-  }
+  addDefinitions(markup, references, copied, byId, source, namespaces);
+  addRootNamespacesUsedIn(root, markup, namespaces);
   markup.namespaces.assign(namespaces.begin(), namespaces.end());
   return markup;
+}
+
+// Each top-level group as written, its own tag included: a group at the top of the document
+// has no ancestor that moves or fades it, so its bytes alone draw it where it is.
+void topGroupMarkups(ReaderState& state, const SourceText& source, const XmlNode* root, const IdIndex& byId,
+                     const std::set<const XmlNode*>& styled) {
+  std::vector<SvgTopGroup>& groups = state.document->topGroups;
+  for (std::size_t k = 0; k < groups.size() && k < state.topGroupNodes.size(); ++k) {
+    const XmlNode* node = state.topGroupNodes[k];
+    if (styledByStylesheet(styled, node)) {
+      groups[k].styledBySheet = true;
+      continue;
+    }
+    const Extent extent = source.extent(node);
+    if (extent[0] == extent[3]) continue;
+    RawMarkup& markup = groups[k].markup;
+    markup.content = source.between(extent[0], extent[3]);
+    std::map<std::string, std::string> namespaces;
+    addNamespacesOf(node, namespaces);
+    addDefinitions(markup, markup.content, {extent}, byId, source, namespaces);
+    addRootNamespacesUsedIn(root, markup, namespaces);
+    markup.namespaces.assign(namespaces.begin(), namespaces.end());
+  }
 }
 
 }  // namespace
@@ -1664,6 +1774,7 @@ std::vector<SvgShape> clippedShapes(const SvgShape& shape, const Region& clip, d
   SvgShape base = shape;
   base.subpaths.clear();
   base.stroke.reset();
+  base.dashArray.clear();
   base.fillRule = FillRule::EvenOdd;  // disjoint polygons with their holes
   if (shape.fill) {
     SvgShape fill = base;
@@ -1705,7 +1816,7 @@ SvgDocument readSvgString(const std::string& text, const std::string& name, cons
   if (rootName != "svg")
     throw InputError(name, "not an SVG document: the root element is <" + rootName + ">, not <svg>");
   adoptSvgNamespace(root);
-  applyStylesheets(xml, root);
+  const std::set<const XmlNode*> styled = applyStylesheets(xml, root);
   roundRgbComponents(xml, root);
 
   const LineIndex lines(buffer);
@@ -1727,7 +1838,13 @@ SvgDocument readSvgString(const std::string& text, const std::string& name, cons
     }
   }
 
-  document.fixedMarkup = fixedLayerMarkup(state, SourceText{text, buffer}, root);
+  state.currentTopGroup = -1;  // what follows is about the document
+  {
+    const SourceText source{text, buffer};
+    const IdIndex byId = elementsById(root);
+    document.fixedMarkup = fixedLayerMarkup(state, source, root, byId, styled);
+    topGroupMarkups(state, source, root, byId, styled);
+  }
 
   // The document's coordinate box: viewBox, else the size, else the drawing itself.
   Box drawingBounds;
@@ -1745,6 +1862,10 @@ SvgDocument readSvgString(const std::string& text, const std::string& name, cons
     document.viewBox = drawingBounds;
     document.warnings.push_back({name, "no viewBox and no width/height: using the drawing's bounds"});
   }
+  if (state.viewBox || (state.width && state.height)) {
+    if (state.width) document.widthText = trimmedView(attributeOf(root, "width"));
+    if (state.height) document.heightText = trimmedView(attributeOf(root, "height"));
+  }
   document.width = state.width.value_or(document.viewBox.empty() ? 0.0 : document.viewBox.width());
   document.height = state.height.value_or(document.viewBox.empty() ? 0.0 : document.viewBox.height());
 
@@ -1753,6 +1874,7 @@ SvgDocument readSvgString(const std::string& text, const std::string& name, cons
   const double tolerance = extent > 0 ? options.flatness * extent : options.flatness;
 
   for (PendingShape& pending : state.shapes) {
+    state.currentTopGroup = pending.shape.topGroup;
     SvgShape shape = std::move(pending.shape);
     // A zero-length subpath (`M4 20h0`, a dot in outline icons) is painted by round and
     // square caps; it is kept as one point.
@@ -1781,8 +1903,11 @@ SvgDocument readSvgString(const std::string& text, const std::string& name, cons
       document.shapes.push_back(std::move(shape));
       continue;
     }
+    if (shape.stroke && !shape.dashArray.empty())
+      state.warn(pending.description, "stroke-dasharray under a clip-path: the clipped stroke is drawn solid");
     for (SvgShape& clipped : clippedShapes(shape, *clip, tolerance)) document.shapes.push_back(std::move(clipped));
   }
+  state.currentTopGroup = -1;
   return document;
 }
 

@@ -334,7 +334,7 @@ std::vector<Shape> placedArt(const RepulsionRun& run, const PackingSimulation& s
   std::vector<Shape> art = type.art;
   std::size_t k = 0;
   for (Shape& shape : art) {
-    shape.strokeWidth *= mesh.growth / frame.scale;
+    scaleStroke(shape, mesh.growth / frame.scale);
     for (Subpath& sub : shape.subpaths)
       for (Vec2& p : sub.points) p = frame.toInput(artPoints[k++]);
   }

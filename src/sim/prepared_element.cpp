@@ -11,7 +11,7 @@ PreparedElement prepareElement(const ElementArt& element, double scale, const El
   prepared.source = element.source;
   prepared.art = element.shapes;
   for (Shape& shape : prepared.art) {
-    shape.strokeWidth *= scale;
+    scaleStroke(shape, scale);
     for (Subpath& sub : shape.subpaths)
       for (Vec2& p : sub.points) p = (p - centre) * scale;
   }

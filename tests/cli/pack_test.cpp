@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
+#include <regex>
 
 #include "run_pak.hpp"
 
@@ -214,12 +215,33 @@ TEST(CliPack, WarnsAboutEveryUndrawnEffect) {
   PakRun run = runPak("pack -c examples/scene.svg -e tests/svg/unsupported-effects.svg --count 3 --max-iterations 5 "
                       "--progress-every 1000 -o " + shellQuoted(dir.file("out.svg")));
   ASSERT_EQ(run.exitCode, 0) << run.err;
-  for (const char* name : {"mask=", "filter=", "mix-blend-mode=", "marker-end=", "stroke-dasharray=",
+  for (const char* name : {"mask=", "filter=", "mix-blend-mode=", "marker-end=",
                            "<text> is not supported", "<image> is not supported"})
     EXPECT_NE(run.err.find(name), std::string::npos) << name << "\n" << run.err;
   for (const std::string& line : run.errLines())
     if (line.find("tests/svg/unsupported-effects.svg") != std::string::npos)
       EXPECT_EQ(line.rfind("pak: warning: ", 0), 0u) << line;
+}
+
+// A dashed stroke keeps its dashes, scaled with the element like its width
+// (tests/svg/dashed-badge.svg: width 2, dashes 6 3, offset 1).
+TEST(CliPack, DashedStrokesKeepTheirDashesScaledWithTheElement) {
+  ScratchFolder dir("cli-pack-dashes");
+  PakRun run = runPak("pack -c examples/scene.svg -e tests/svg/dashed-badge.svg --count 4 --max-iterations 50 -q -o " +
+                      shellQuoted(dir.file("out.svg")));
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  EXPECT_EQ(run.err.find("dasharray"), std::string::npos) << run.err;  // read, not warned about
+  const std::string svg = readWholeFile(dir.file("out.svg"));
+  const std::regex dashed(R"~(stroke-width="([0-9.]+)" stroke-dasharray="([0-9.]+) ([0-9.]+)" stroke-dashoffset="([0-9.]+)")~");
+  int rings = 0;
+  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), dashed); it != std::sregex_iterator(); ++it, ++rings) {
+    const double width = std::stod((*it)[1]);
+    EXPECT_NE(width, 2.0);  // placed smaller or larger than drawn
+    EXPECT_NEAR(std::stod((*it)[2]) / width, 3.0, 0.01) << it->str();
+    EXPECT_NEAR(std::stod((*it)[3]) / width, 1.5, 0.01) << it->str();
+    EXPECT_NEAR(std::stod((*it)[4]) / width, 0.5, 0.01) << it->str();
+  }
+  EXPECT_EQ(rings, 4);
 }
 
 // Editable curves by default (issue 17): cubic Béziers fitted within 0.085 canonical units of

@@ -308,6 +308,38 @@ TEST_F(AnimationOutputTest, AnimatedSvgShowsFramesInTurnWhenTheirStructureDiffer
   EXPECT_NE(text.find("inkscape:label=\"frame-0002\" visibility=\"hidden\">"), std::string::npos);
 }
 
+// A scene's copied layers are the same in every frame: written once, outside the frames, the
+// background under them and the title over them, so their ids stay unique.
+TEST_F(AnimationOutputTest, AnimatedSvgWritesTheScenesCopiedLayersOnce) {
+  std::vector<pak::Drawing> frames = movingSquare();
+  frames[1].groups[1].children.push_back(frames[1].groups[1].children[0]);  // a flip book
+  auto copied = [](const std::string& content) {
+    pak::DrawingGroup group;
+    group.markup = pak::RawMarkup{content, {}, {}};
+    group.markupReplacesGroup = true;
+    return group;
+  };
+  const std::string background = R"~(<g id="paper"><rect width="100" height="50" fill="#ffe"/></g>)~";
+  const std::string title = R"~(<g id="title"><rect id="rule" width="100" height="2"/></g>)~";
+  for (pak::Drawing& frame : frames) {
+    frame.groups.insert(frame.groups.begin(), copied(background));
+    frame.groups.push_back(copied(title));
+  }
+  pak::writeAnimatedSvg(frames, file("layers.svg"), smallOptions());
+  const std::string text = readText(file("layers.svg"));
+  std::vector<std::string> ids;
+  animatesOf(text, &ids);
+  std::set<std::string> unique(ids.begin(), ids.end());
+  EXPECT_EQ(unique.size(), ids.size()) << text;
+  const std::size_t paper = text.find(background), rule = text.find(title);
+  ASSERT_NE(paper, std::string::npos);
+  ASSERT_NE(rule, std::string::npos);
+  EXPECT_EQ(text.find(background, paper + 1), std::string::npos);
+  EXPECT_EQ(text.find(title, rule + 1), std::string::npos);
+  EXPECT_LT(paper, text.find("id=\"frame-0000\""));
+  EXPECT_GT(rule, text.find("id=\"frame-0002\""));
+}
+
 TEST_F(AnimationOutputTest, AnimatedSvgOfOneFrameIsStatic) {
   pak::writeAnimatedSvg({squareFrame(10)}, file("one.svg"), smallOptions());
   EXPECT_TRUE(animatesOf(readText(file("one.svg"))).empty());

@@ -3,6 +3,7 @@
 // the copy reads back as the same shapes.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 
 #include "pak/io/drawing.hpp"
@@ -63,9 +64,9 @@ TEST(FixedMarkup, ReaderKeepsTheLayerSourceItsDefinitionsAndNamespaces) {
       << markup.content;
   EXPECT_EQ(markup.content.find("layer2"), std::string::npos);
   // The gradient the circle uses and the one holding its stops; not the unused one.
-  EXPECT_NE(markup.defs.find(kRadial), std::string::npos);
-  EXPECT_NE(markup.defs.find(kStops), std::string::npos);
-  EXPECT_EQ(markup.defs.find("unused"), std::string::npos);
+  EXPECT_EQ(markup.definitions.size(), 2u);
+  for (const std::string& definition : {kRadial, kStops})
+    EXPECT_NE(std::find(markup.definitions.begin(), markup.definitions.end(), definition), markup.definitions.end());
   using Ns = std::pair<std::string, std::string>;
   auto has = [&](const Ns& ns) { return std::find(markup.namespaces.begin(), markup.namespaces.end(), ns) != markup.namespaces.end(); };
   EXPECT_TRUE(has({"inkscape", "http://www.inkscape.org/namespaces/inkscape"}));

@@ -102,6 +102,23 @@ TEST(SvgWriter, ExplicitSizeIsKept) {
   EXPECT_EQ(attribute(parsed.root(), "viewBox"), "0 0 200 100");
 }
 
+// A scene's size as written (units and all) wins over the numbers; a side it left out stays out.
+TEST(SvgWriter, SizeAsWrittenIsKept) {
+  pak::Drawing drawing = sampleDrawing();
+  drawing.width = 755.906;
+  drawing.height = 377.953;
+  drawing.widthText = "200mm";
+  drawing.heightText = "100mm";
+  ParsedSvg both(pak::toSvgString(drawing));
+  EXPECT_EQ(attribute(both.root(), "width"), "200mm");
+  EXPECT_EQ(attribute(both.root(), "height"), "100mm");
+  EXPECT_EQ(attribute(both.root(), "viewBox"), "0 0 200 100");
+  drawing.heightText.clear();
+  ParsedSvg one(pak::toSvgString(drawing));
+  EXPECT_EQ(attribute(one.root(), "width"), "200mm");
+  EXPECT_EQ(attribute(one.root(), "height"), "<absent>");
+}
+
 TEST(SvgWriter, GroupsAndPathsKeepStructureAndPaint) {
   ParsedSvg parsed(pak::toSvgString(sampleDrawing()));
   auto* container = parsed.root()->first_node("g");
@@ -387,6 +404,32 @@ TEST(SvgWriterRoundTrip, StrokeCapsJoinsMiterLimitAndDotsComeBack) {
   ASSERT_EQ(back.shapes[2].subpaths.size(), 1u);
   EXPECT_EQ(back.shapes[2].subpaths[0].points.size(), 1u);
   EXPECT_NEAR(pak::area(pak::paintedRegion(back.shapes[2])), std::acos(-1.0) * 4, 0.25);  // a disc of radius 2 (as a polygon)
+}
+
+// Dashes are written on stroked shapes (the offset when not 0) and read back; a shape without
+// a stroke writes none.
+TEST(SvgWriterRoundTrip, StrokeDashesComeBack) {
+  pak::DrawnShape dashed;
+  dashed.subpaths = {{{{10, 10}, {50, 10}}, false}};
+  dashed.stroke = pak::Color{0, 0, 0, 1.0};
+  dashed.dashArray = {4, 2.5};
+  dashed.dashOffset = 1.25;
+  pak::DrawnShape filled = dashed;
+  filled.stroke.reset();
+  filled.fill = pak::Color{0, 0, 0, 1.0};
+  filled.subpaths = {rectangle(60, 60, 70, 70)};
+  const std::string svg = pak::toSvgString(oneGroupDrawing("art", {dashed, filled}));
+  ParsedSvg parsed(svg);
+  auto* first = parsed.root()->first_node("g")->first_node("path");
+  ASSERT_NE(first, nullptr);
+  EXPECT_EQ(attribute(first, "stroke-dasharray"), "4 2.5");
+  EXPECT_EQ(attribute(first, "stroke-dashoffset"), "1.25");
+  EXPECT_EQ(attribute(first->next_sibling("path"), "stroke-dasharray"), "<absent>");
+
+  pak::SvgDocument back = pak::readSvgString(svg, "dashes.svg");
+  ASSERT_EQ(back.shapes.size(), 2u);
+  EXPECT_EQ(back.shapes[0].dashArray, (std::vector<double>{4, 2.5}));
+  EXPECT_DOUBLE_EQ(back.shapes[0].dashOffset, 1.25);
 }
 
 TEST(SvgWriter, CurveToleranceWritesCubicBeziersThatReadBackAsTheSameShape) {

@@ -27,6 +27,17 @@ done < <(find examples -name '*.svg' | sort)
 "$pak" animate -c examples/animate/stars/disc-moon.svg -a examples/animate/stars/stars.json --slices 6 --frames 2 \
   --width 60 --sheet-frames 2 --svg-keyframes 2 --max-iterations 50 --svg-frames --no-gif -q -o "$out/animate"
 "$pak" render examples/flow/owl.svg -o "$out/render.svg"
+# A scene with a page in millimetres and layers of its own (copied as written, with what they
+# reference), packed with a dashed element, by each command.
+"$pak" pack -c tests/svg/poster-scene.svg -e tests/svg/dashed-badge.svg examples/elements/leaf.svg --count 6 \
+  --max-iterations 50 -q -o "$out/poster.svg"
+"$pak" flow tests/svg/poster-scene.svg -e examples/flow/elements --count 8 --iterations 0 -q -o "$out/poster-flow.svg"
+"$pak" animate -c tests/svg/poster-scene.svg -a examples/animate/stars/stars.json --slices 6 --frames 2 \
+  --width 60 --sheet-frames 2 --svg-keyframes 2 --max-iterations 50 --svg-frames --no-gif -q -o "$out/poster-animate"
+grep -q 'width="210mm" height="210mm" viewBox="0 0 210 210"' "$out/poster.svg" || fail "poster.svg lost the page size"
+grep -q 'inkscape:label="Background"' "$out/poster.svg" || fail "poster.svg lost the background layer"
+grep -q 'stroke-dasharray=' "$out/poster.svg" || fail "poster.svg lost the dashes"
 "$pak" metrics "$out/pack.svg" --plot "$out/plot.svg" > /dev/null
-for file in "$out"/*.svg "$out"/animate/*.svg "$out"/animate/svg-frames/*.svg; do check "$file"; done
+for file in "$out"/*.svg "$out"/animate/*.svg "$out"/animate/svg-frames/*.svg "$out"/poster-animate/*.svg \
+  "$out"/poster-animate/svg-frames/*.svg; do check "$file"; done
 echo "well_formed_test: $checked SVG files well-formed, the outputs with unique ids"

@@ -34,10 +34,19 @@ struct Shape {
   StrokeCap lineCap = StrokeCap::Round;
   StrokeJoin lineJoin = StrokeJoin::Round;
   double miterLimit = 4.0;
+  // Dashes: the lengths of dash and gap in turn (an even count), in the same units as the
+  // points, and how far into that pattern the path starts. Empty: solid. Drawing only: the
+  // outline (paintedRegion) takes the stroke as solid, which covers every dash.
+  std::vector<double> dashArray;
+  double dashOffset = 0.0;
   // The coordinate pairs it was drawn with (1 per move or line, 3 per cubic, as editors
   // count Bézier points); 0 when Pak made it. What the output's fitted curves are measured by.
   int drawnPoints = 0;
 };
+
+// What the shape's stroke becomes when the shape is scaled by `factor`: its width and dashes
+// scaled alike.
+void scaleStroke(Shape& shape, double factor);
 
 // The region the shape's fill covers (fill rule applied; open subpaths closed, as SVG does).
 // Geometry only: computed whether or not the shape has a fill paint (fill="none" included).

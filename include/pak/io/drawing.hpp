@@ -27,11 +27,18 @@ struct DrawingGroup {
   std::optional<Box> clip = std::nullopt;  // draw only inside this box (an SVG clipPath), e.g. a tile
   // The SVG writer writes this instead of `shapes` (the PNG renderer still draws `shapes`).
   std::optional<RawMarkup> markup = std::nullopt;
+  // The markup is the whole group as the input wrote it, its own <g> included (a scene's
+  // layer, with its id, name and style): written in place of this group's <g>.
+  bool markupReplacesGroup = false;
 };
 
 struct Drawing {
   Box viewBox;
   double width = 0.0, height = 0.0;  // output size in user units (0: viewBox size)
+  // The size as the scene wrote it ("210mm", "8.5in"): written as it is instead of width and
+  // height when either is given, so a packing opens at the size the artist drew (a side the
+  // scene left out stays out).
+  std::string widthText, heightText;
   std::vector<DrawingGroup> groups;
 };
 

@@ -1,7 +1,8 @@
 #pragma once
 // The output layout every packer shares: <g id="container">, <g id="fixed"> when present,
 // <g id="elements"> with one <g class="element" data-source="…"> per placed element, and the
-// debug layers <g id="skins">, <g id="meshes"> on request.
+// debug layers <g id="skins">, <g id="meshes"> on request; the scene's other layers as drawn,
+// under the container or over the elements.
 #include "pak/io/drawing.hpp"
 #include "pak/io/scene_layout.hpp"
 #include "pak/sim/packing.hpp"

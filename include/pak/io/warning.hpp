@@ -9,6 +9,9 @@ namespace pak {
 struct Warning {
   std::string where;    // file and element id or line
   std::string message;  // what was skipped and why
+  // The document's top-level group it is about (SvgShape::topGroup), -1 for none: a scene
+  // that copies that group to its outputs as written drops what the reader said of it.
+  int topGroup = -1;
 };
 
 }  // namespace pak
