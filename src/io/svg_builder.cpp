@@ -123,9 +123,13 @@ std::string pathData(const Shape& shape, int precision, double curveTolerance, S
   for (const Subpath& subpath : shape.subpaths) {
     if (subpath.points.empty()) continue;
     if (!d.empty()) d += ' ';
-    if (curveTolerance > 0.0 && subpath.points.size() >= 3) {
-      std::vector<CubicBezier> curves = subpath.closed ? fitCubicBeziersClosed(subpath.points, curveTolerance)
-                                                       : fitCubicBeziers(subpath.points, curveTolerance);
+    std::vector<CubicBezier> curves;
+    if (curveTolerance > 0.0 && subpath.points.size() >= 3)
+      curves = subpath.closed ? fitCubicBeziersClosed(subpath.points, curveTolerance)
+                              : fitCubicBeziers(subpath.points, curveTolerance);
+    // Curves that hold more points than the polygon (a container flattened coarser than the
+    // tolerance, whose chords no curve follows) are not worth it: the polygon is exact.
+    if (!curves.empty() && 3 * curves.size() + 1 < subpath.points.size() + (subpath.closed ? 1 : 0)) {
       d += 'M';
       put(curves.front()[0]);
       for (const CubicBezier& c : curves) {

@@ -20,7 +20,8 @@ namespace pak {
 namespace {
 
 // Rounds of neighbourhood smoothing, each reaching two rings further. One takes the demo's
-// fitted curves from 6,629–7,043 points to 4,346–4,538 (seeds 1–5), two to 4,142–4,496.
+// fitted curves from 6,629–7,043 points to 4,346–4,538 (seeds 1–5, at 654650a), two to
+// 4,142–4,496.
 constexpr int kSmoothingRounds = 2;
 
 // A 2 × 2 matrix, row-major: a deformation gradient.
