@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "pak/error.hpp"
+#include "io/svg_builder.hpp"
 #include "pak/io/svg_reader.hpp"
 
 namespace fs = std::filesystem;
@@ -452,6 +453,31 @@ TEST(SvgWriter, CurveToleranceWritesCubicBeziersThatReadBackAsTheSameShape) {
   // Every flattened point of the curves lies within the tolerance (plus flattening) of the circle.
   for (const pak::Subpath& sub : back.shapes[0].subpaths)
     for (pak::Vec2 p : sub.points) EXPECT_NEAR(pak::distance(p, {50, 50}), 40.0, 0.15);
+}
+
+// A ring fitted with curves when they hold fewer points than it, else written as it is: a
+// 12-gon is no circle within 0.01 (its chords are 3.4 inside it), and a cubic per edge would
+// triple its points.
+TEST(SvgWriter, CurvesOnlyWhereTheyHoldFewerPointsThanThePolygon) {
+  auto ring = [](int sides) {
+    pak::Shape shape;
+    pak::Subpath sub;
+    for (int k = 0; k < sides; ++k) {
+      const double a = 2 * std::acos(-1.0) * k / sides;
+      sub.points.push_back({100 * std::cos(a), 100 * std::sin(a)});
+    }
+    sub.closed = true;
+    shape.subpaths.push_back(sub);
+    return shape;
+  };
+  pak::SvgPathStats coarse, fine;
+  const std::string polygon = pak::svg_builder::pathData(ring(12), 3, 0.01, &coarse);
+  EXPECT_EQ(polygon.find('C'), std::string::npos) << polygon;
+  EXPECT_EQ(coarse.points, 12u);
+  const std::string curves = pak::svg_builder::pathData(ring(400), 3, 0.05, &fine);
+  EXPECT_NE(curves.find('C'), std::string::npos);
+  EXPECT_LT(fine.points, 40u);
+  EXPECT_LE(fine.largestDeviation, 0.05 * 1.13);
 }
 
 }  // namespace
