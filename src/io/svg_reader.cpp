@@ -365,16 +365,18 @@ std::string attributeOf(const XmlNode* node, std::string_view name) {
   return {};
 }
 
-std::string inkscapeLabel(const XmlNode* node) {
+// An attribute in Inkscape's namespace (inkscape:label, inkscape:groupmode), by its local name.
+std::string inkscapeAttribute(const XmlNode* node, std::string_view name) {
   for (auto* a = node->first_attribute(); a; a = a->next_attribute()) {
     std::string_view local(a->local_name(), a->local_name_size());
     std::string_view ns(a->namespace_uri(), a->namespace_uri_size());
     std::string_view qname(a->name(), a->name_size());
-    if (local == "label" && (ns == kInkscapeNamespace || qname == "inkscape:label"))
+    if (local == name && (ns == kInkscapeNamespace || qname == "inkscape:" + std::string(name)))
       return std::string(a->value(), a->value_size());
   }
   return {};
 }
+std::string inkscapeLabel(const XmlNode* node) { return inkscapeAttribute(node, "label"); }
 
 // A presentation property as the element gives it: its style="…" declaration (stylesheets
 // already folded in) wins over the attribute; "" when it has neither.
@@ -459,7 +461,10 @@ class NodeContext {
     if (std::string own = attributeOf(node, "data-gap"); !own.empty()) gap_ = std::move(own);
     if (tag_ == "defs") nonRendered_ = true;
     if (tag_ == "g") {
-      if (parent.isRoot_) topGroup_ = state_->topLevelGroups++;
+      if (parent.isRoot_) {
+        topGroup_ = state_->topLevelGroups++;
+        state_->document->inkscapeLayers.push_back(inkscapeAttribute(node, "groupmode") == "layer");
+      }
       if (parent.isLayerGroup_) layerGroup_ = parent.childGroups_++;
       enterGroupLayer();
     }
