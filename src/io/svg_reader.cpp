@@ -763,6 +763,30 @@ class ShapeContext : public NodeContext {
     segment.end = local(x, y);
     append(segment);
   }
+  // An arc as SVG's implementation notes (F.6.2) say: none between one point and itself, a
+  // line when a radius is zero, else cubics of at most a quarter turn each (radii too small
+  // to reach the end scaled up by SVG++).
+  void path_elliptical_arc_to(double rx, double ry, double xAxisRotation, bool largeArc, bool sweep, double x,
+                              double y, tag::coordinate::absolute) {
+    const Vec2 from = current_, to = local(x, y);
+    if (from == to) return;
+    if (!(rx > 0.0) || !(ry > 0.0)) {
+      path_line_to(x, y, tag::coordinate::absolute());
+      return;
+    }
+    const double rotation = xAxisRotation * boost::math::constants::degree<double>();
+    double cx = 0, cy = 0, theta1 = 0, theta2 = 0;
+    svgpp::arc_endpoint_to_center(from.x, from.y, to.x, to.y, rx, ry, rotation, largeArc, sweep, cx, cy, theta1,
+                                  theta2);
+    constexpr double turn = boost::math::constants::two_pi<double>();
+    if (sweep && theta2 < theta1) theta2 += turn;
+    if (!sweep && theta2 > theta1) theta2 -= turn;
+    using ArcToCubics = svgpp::arc_to_bezier<double>;
+    ArcToCubics cubics(cx, cy, rx, ry, rotation, ArcToCubics::circle_angle_tag(), theta1, theta2,
+                       ArcToCubics::max_angle_tag(), boost::math::constants::half_pi<double>());
+    for (ArcToCubics::iterator it(cubics); !it.eof(); it.advance())
+      path_cubic_bezier_to(it.p1x(), it.p1y(), it.p2x(), it.p2y(), it.p3x(), it.p3y(), tag::coordinate::absolute());
+  }
   void path_close_subpath() {
     if (subpaths_.empty()) return;
     subpaths_.back().closed = true;
@@ -1002,9 +1026,15 @@ using ProcessedAttributes =
                         StyleAttributes>,
               StructureAttributes>;
 
+// SVG++'s minimal path events, except arcs: they come to ShapeContext as arcs, because SVG++
+// converts them to cubics without SVG's special cases (a zero radius gave NaN).
+struct PathEvents : svgpp::policy::path::minimal {
+  static const bool arc_as_cubic_bezier = false;
+};
+
 using DocumentTraversal = svgpp::document_traversal<
     svgpp::processed_elements<ProcessedElements>, svgpp::processed_attributes<ProcessedAttributes>,
-    svgpp::context_factories<ContextFactories>, svgpp::path_policy<svgpp::policy::path::minimal>,
+    svgpp::context_factories<ContextFactories>, svgpp::path_policy<PathEvents>,
     svgpp::length_policy<svgpp::policy::length::forward_to_method<NodeContext>>,
     svgpp::error_policy<ErrorPolicy>, svgpp::attribute_traversal_policy<AttributeOrder>>;
 

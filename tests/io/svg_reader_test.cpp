@@ -119,6 +119,15 @@ TEST(SvgReaderPath, ArcRadiiTooSmallAreScaledUp) {
   EXPECT_NEAR(fillArea(R"~(<path d="M40 50 A1 1 0 0 1 60 50 Z"/>)~"), half, half * 2e-3);
 }
 
+// SVG's special cases (OpenMoji draws square corners as `a0,0,0,0,1,0,0`): an arc to its own
+// start is nothing, a zero radius is a line.
+TEST(SvgReaderPath, DegenerateArcsAsSvgSpecifies) {
+  EXPECT_NEAR(fillArea(R"~(<path d="M0 0 H10 a0,0,0,0,1,0,0 V10 H0 Z"/>)~"), 100.0, 1e-9);
+  EXPECT_NEAR(fillArea(R"~(<path d="M0 0 H10 a5 5 0 0 1 0 0 V10 H0 Z"/>)~"), 100.0, 1e-9);
+  EXPECT_NEAR(fillArea(R"~(<path d="M0 0 H10 a0 5 0 0 1 0 10 H0 Z"/>)~"), 100.0, 1e-9);
+  EXPECT_NEAR(fillArea(R"~(<path d="M0 0 H10 A5 0 0 0 1 10 10 H0 Z"/>)~"), 100.0, 1e-9);
+}
+
 TEST(SvgReaderPath, QuadraticCurveArea) {
   // A parabolic segment: 2/3 of base × height; the curve peaks at half the control height.
   const double segment = 2.0 / 3.0 * 20 * 10;
