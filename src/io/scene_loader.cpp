@@ -328,6 +328,9 @@ LoadedElement elementFromDocument(const SvgDocument& document) {
       }
       continue;
     }
+    // A shape with neither fill nor stroke shows nothing and is no mistake: outline icon sets
+    // put an invisible frame in every icon (tabler's `M0 0h24v24H0z`).
+    if (!shape.fill && !shape.stroke) continue;
     element.shapes.push_back(shape);
     loaded.shapes.push_back(shape);
     artIndices.push_back(i);

@@ -191,6 +191,17 @@ TEST(ElementLoader, WarnsAboutZeroAreaPathsAndOpenFills) {
   EXPECT_NEAR(area(element.element.outline), 100 + 50, 1e-3);
 }
 
+// A shape with neither fill nor stroke (the invisible frame of outline icon sets) is not art
+// and no mistake: no warning.
+TEST(ElementLoader, InvisibleShapesAreSkippedSilently) {
+  const LoadedElement element = elementFromDocument(svgDocument(R"~(
+      <path d="M0 0h24v24H0z" fill="none" stroke="none"/>
+      <path d="M4 4 H10 V10 H4 Z"/>)~"));
+  EXPECT_EQ(element.element.shapes.size(), 1u);
+  EXPECT_TRUE(element.warnings.empty()) << element.warnings.front().message;
+  EXPECT_NEAR(area(element.element.outline), 36.0, 1e-9);
+}
+
 TEST(ElementLoaderErrors, ZeroAreaElement) {
   const std::string message = errorOf([] {
     elementFromDocument(svgDocument(R"~(<path d="M0 0 L10 0 L20 0 Z"/><path d="M0 0 L10 10" fill="none"/>)~", "flat.svg"));
