@@ -236,6 +236,7 @@ struct ReaderState {
   std::optional<double> width, height;
   int topLevelGroups = 0;
   std::vector<FixedLayerSource> fixedLayers;
+  std::set<std::string> ids;  // of every element: a paint server that is not among them is missing
 
   void warn(const std::string& where, const std::string& message) {
     document->warnings.push_back({file + (where.empty() ? "" : ": " + where), message});
@@ -1122,7 +1123,12 @@ std::optional<Color> resolvePaint(ReaderState& state, const Paint& paint, std::u
     return Color{channel(r), channel(g), channel(b), alpha * a / n};
   }
   if (paint.fallback) return resolveSolid(*paint.fallback, currentColor, alpha);
-  state.warn(where, "paint server #" + paint.server + " is missing or not supported; painted grey");
+  // A reference to nothing paints nothing, as in a browser (SVG 2: treated as none).
+  if (!state.ids.count(paint.server)) {
+    state.warn(where, "paint server #" + paint.server + " does not exist; not painted");
+    return std::nullopt;
+  }
+  state.warn(where, "paint server #" + paint.server + " is not supported; painted grey");
   return colorFrom(0x808080, alpha);
 }
 
@@ -1749,6 +1755,9 @@ SvgDocument readSvgString(const std::string& text, const std::string& name, cons
   state.lines = &lines;
   state.document = &document;
   expandUses(xml, root, state, lines);
+  forEachElement(root, [&](XmlNode* node) {
+    if (std::string id = attributeOf(node, "id"); !id.empty()) state.ids.insert(std::move(id));
+  });
   state.lengths.set_viewport_size(0, 0);  // no percentages until a viewBox or size is known
   {
     CurrentReaderScope scope(&state);

@@ -366,6 +366,19 @@ TEST(SvgReaderPaint, GradientBecomesTheMeanOfItsStops) {
   EXPECT_FALSE(document.warnings.empty());
 }
 
+// A paint server that is not in the file paints nothing, as in a browser (flag-icons' sh-ac
+// refers to gradients it lacks); one that is there but not supported (a pattern) is grey.
+TEST(SvgReaderPaint, MissingPaintServerPaintsNothing) {
+  SvgDocument document = read(R"~(<defs><pattern id="dots" width="2" height="2"/></defs>
+      <rect id="lost" width="10" height="10" fill="url(#nowhere)" stroke="url(#dots)"/>)~");
+  ASSERT_EQ(document.shapes.size(), 1u);
+  EXPECT_FALSE(document.shapes[0].fill.has_value());
+  EXPECT_EQ(*document.shapes[0].stroke, (Color{128, 128, 128, 1.0}));
+  ASSERT_EQ(document.warnings.size(), 2u);
+  EXPECT_NE(document.warnings[0].message.find("#nowhere does not exist; not painted"), std::string::npos);
+  EXPECT_NE(document.warnings[1].message.find("#dots is not supported; painted grey"), std::string::npos);
+}
+
 TEST(SvgReaderPaint, StylesheetClassesLikeIllustratorWrites) {
   SvgDocument document = read(R"~(<defs><style><![CDATA[
         /* Illustrator's internal CSS */
