@@ -1,5 +1,6 @@
 // Top-level groups that are layers of one drawing make one element; a library's groups, laid
-// out apart, stay separate elements.
+// out apart, stay separate elements. (An OpenMoji-like emoji: tests/svg/layered-emoji.svg in
+// svg_corpus_test.)
 #include "io/drawing_layers.hpp"
 
 #include <gtest/gtest.h>
@@ -19,24 +20,6 @@ SvgDocument svgDocument(const std::string& body, const std::string& name = "file
                        R"~(xmlns:inkscape="http://www.inkscape.org/namespaces/inkscape" viewBox="0 0 100 100">)~" +
                            body + "</svg>",
                        name);
-}
-
-// OpenMoji draws an emoji as a `color` layer of fills under a `line` layer of outlines, with
-// empty `hair` and `skin` groups between.
-TEST(DrawingLayers, OverlappingGroupsAreOneDrawing) {
-  const SvgDocument face = svgDocument(R"~(
-      <g id="color"><circle cx="50" cy="50" r="30" fill="#fcea2b"/></g>
-      <g id="hair"/><g id="skin"/>
-      <g id="line"><circle cx="50" cy="50" r="30" fill="none" stroke="#000" stroke-width="2"/>
-        <circle cx="40" cy="42" r="3"/><circle cx="60" cy="42" r="3"/>
-        <path d="M38 60 Q50 70 62 60" fill="none" stroke="#000" stroke-width="2"/></g>)~", "face.svg");
-  EXPECT_EQ(drawingsOfGroups(face), (Drawings{{0, 3}}));
-  const std::vector<LoadedElement> elements = elementsFromDocument(face);
-  ASSERT_EQ(elements.size(), 1u);
-  EXPECT_EQ(elements[0].element.name, "face");
-  EXPECT_EQ(elements[0].element.shapes.size(), 5u);
-  // The fill and its outline: the disc grown by half the outline's width.
-  EXPECT_NEAR(area(elements[0].element.outline), 3.14159265 * 31 * 31, 3.0);
 }
 
 // A library file: three elements side by side, with space between them.
