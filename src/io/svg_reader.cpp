@@ -274,11 +274,20 @@ class NodeContext;
 struct ErrorPolicy {
   using context_type = NodeContext;  // every context derives from it
 
+  // Named by itself, <tag id="…">: the element read last may be a sibling's child.
   template <class Context, class XmlElement, class Name>
-  static bool unknown_element(const Context&, const XmlElement&, const Name& name) {
-    if (currentReader)
-      currentReader->warn(currentReader->currentElement,
-                          "unknown element <" + toString(name) + "> skipped");
+  static bool unknown_element(const Context&, const XmlElement& element, const Name& name) {
+    if (!currentReader) return true;
+    const std::string tag = toString(name);
+    std::string where = "<" + tag;
+    for (auto* a = element->first_attribute(); a; a = a->next_attribute())
+      if (std::string_view(a->name(), a->name_size()) == "id")
+        where += " id=\"" + std::string(a->value(), a->value_size()) + "\"";
+    where += ">";
+    // Inkscape 0.92 wrote text in a frame as <flowRoot>: text, as far as the artist knows.
+    currentReader->warn(where, tag == "flowRoot"
+                                   ? "<flowRoot> (flowed text) is not supported; skipped (convert it to paths)"
+                                   : "unknown element <" + tag + "> skipped");
     return true;
   }
   template <class Context, class... Rest>

@@ -438,6 +438,17 @@ TEST(SvgReaderVisibility, TextAndImageAreSkippedWithAWarning) {
   EXPECT_EQ(skipped, 2);
 }
 
+// Inkscape's flowed text (<flowRoot>, in its examples) is text to the artist, and the warning
+// names the element itself, not the shape read before it.
+TEST(SvgReaderVisibility, FlowedTextIsSkippedAsText) {
+  SvgDocument document = read(R"~(<rect id="before" width="1" height="1"/>
+      <flowRoot id="note"><flowRegion><rect width="50" height="50"/></flowRegion><flowPara>Hi</flowPara></flowRoot>)~");
+  EXPECT_EQ(document.shapes.size(), 1u);
+  ASSERT_EQ(document.warnings.size(), 1u);
+  EXPECT_EQ(document.warnings[0].where, "test.svg: <flowRoot id=\"note\">");
+  EXPECT_NE(document.warnings[0].message.find("(flowed text) is not supported"), std::string::npos);
+}
+
 // ---- <use> ---------------------------------------------------------------------------------
 
 int warningsContaining(const SvgDocument& document, const std::string& text) {
