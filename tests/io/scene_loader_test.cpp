@@ -292,5 +292,22 @@ TEST(DrawingFromDocument, OneGroupPerLayerInOrder) {
   EXPECT_EQ(drawing.groups[2].id, "fixed");
 }
 
+// Shapes are drawn in document order even when a layer comes back after other shapes (a
+// group with an id copied by a <use> further on, as flag-icons' gi.svg does): the black
+// behind comes before the red in front. The name stays on the layer's first run.
+TEST(DrawingFromDocument, LayersThatComeBackKeepTheDocumentOrder) {
+  Drawing drawing = drawingFromDocument(svgDocument(R"~(
+      <g id="tower"><rect id="behind" width="10" height="10" fill="#000"/></g>
+      <rect id="front" width="5" height="5" fill="#f00"/>
+      <use href="#tower" x="20"/>)~"));
+  ASSERT_EQ(drawing.groups.size(), 3u);
+  EXPECT_EQ(drawing.groups[0].id, "tower");
+  EXPECT_EQ(drawing.groups[0].shapes[0].id, "behind");
+  EXPECT_EQ(drawing.groups[1].id, "");
+  EXPECT_EQ(drawing.groups[1].shapes[0].id, "front");
+  EXPECT_EQ(drawing.groups[2].id, "");
+  EXPECT_EQ(drawing.groups[2].shapes[0].id, "behind");
+}
+
 }  // namespace
 }  // namespace pak
