@@ -109,6 +109,21 @@ Affine operator*(const Affine& m, const Affine& n) {
           m.b * n.c + m.d * n.d, m.a * n.e + m.c * n.f + m.e, m.b * n.e + m.d * n.f + m.f};
 }
 
+std::optional<Affine> inverse(const Affine& m) {
+  const double det = m.a * m.d - m.b * m.c;
+  if (!(std::abs(det) > 0.0) || !std::isfinite(1.0 / det)) return std::nullopt;
+  return Affine{m.d / det, -m.b / det, -m.c / det, m.a / det, (m.c * m.f - m.d * m.e) / det,
+                (m.b * m.e - m.a * m.f) / det};
+}
+
+// Does m stretch lengths differently in different directions (scale x and y apart, or skew)?
+// Then no one width is the width of a stroke it transforms. A similarity's columns are
+// orthogonal and equally long.
+bool stretches(const Affine& m) {
+  const double x = m.a * m.a + m.b * m.b, y = m.c * m.c + m.d * m.d;
+  return std::abs(m.a * m.c + m.b * m.d) > 1e-9 * (x + y) || std::abs(x - y) > 1e-9 * (x + y);
+}
+
 // ---------------------------------------------------------------------------------------
 // Paint as written in the file; resolved to a Color once the whole document is read
 // (a gradient may be defined after the shape that uses it).
@@ -178,6 +193,9 @@ struct PendingShape {
   double fillOpacity = 1.0, strokeOpacity = 1.0;
   std::uint32_t color = 0;
   std::string description;  // for messages: <path id="…">
+  // The transform, when it stretches (see `stretches`), and the stroke width before it.
+  std::optional<Affine> stretch;
+  double localStrokeWidth = 1.0;
 };
 
 struct GradientStop {
@@ -826,6 +844,8 @@ class ShapeContext : public NodeContext {
     pending.subpaths = std::move(subpaths_);
     SvgShape& shape = pending.shape;
     shape.strokeWidth = style_.strokeWidth * m.lengthScale();
+    if (stretches(m)) pending.stretch = m;
+    pending.localStrokeWidth = style_.strokeWidth;
     shape.opacity = effectiveOpacity();
     shape.fillRule = style_.fillRule;
     shape.lineCap = style_.lineCap;
@@ -1706,6 +1726,45 @@ void appendRegion(SvgShape& shape, const Region& region) {
   }
 }
 
+// A stroke under a stretching transform, as a browser draws it: outlined in the shape's own
+// coordinates, where it has one width, then transformed. It becomes a second shape filling
+// the band in the stroke's colour; the first keeps the fill. A transform that cannot be
+// undone keeps the stroke as it is.
+std::vector<SvgShape> withStretchedStroke(SvgShape shape, const PendingShape& pending, double tolerance) {
+  const std::optional<Affine> back = pending.stretch ? inverse(*pending.stretch) : std::nullopt;
+  if (!back || !shape.stroke || !(shape.strokeWidth > 0.0)) return {std::move(shape)};
+  const Affine& m = *pending.stretch;
+  Shape local = shape;
+  local.fill.reset();
+  local.strokeWidth = pending.localStrokeWidth;
+  for (Subpath& subpath : local.subpaths)
+    for (Vec2& p : subpath.points) p = back->apply(p);
+  // The grid fine enough after the transform's largest stretch.
+  const double largest = std::sqrt(std::max(m.a * m.a + m.b * m.b, m.c * m.c + m.d * m.d));
+  Region band = paintedRegion(local, clipOptionsFor(tolerance / std::max(largest, 1e-12)));
+  for (Polygon& polygon : band) {
+    for (Vec2& p : polygon.outer) p = m.apply(p);
+    for (Ring& hole : polygon.holes)
+      for (Vec2& p : hole) p = m.apply(p);
+  }
+  normalizeOrientation(band);  // a mirroring transform turns the rings around
+
+  std::vector<SvgShape> out;
+  SvgShape stroke = shape;
+  stroke.subpaths.clear();
+  stroke.fill = shape.stroke;
+  stroke.stroke.reset();
+  stroke.fillRule = FillRule::EvenOdd;  // disjoint polygons with their holes
+  if (!stroke.id.empty() && shape.fill) stroke.id += "-stroke";  // ids stay unique
+  appendRegion(stroke, band);
+  shape.stroke.reset();
+  // The fill of open lines (SVG's default black on a path drawn as a stroke) paints nothing.
+  const ClipOptions options = clipOptionsFor(tolerance);
+  if (shape.fill && area(filledRegion(shape, options)) > 0.0) out.push_back(std::move(shape));
+  if (!stroke.subpaths.empty()) out.push_back(std::move(stroke));
+  return out;
+}
+
 // The shape cut by the clip: its fill as the clipped filled region; its stroke, when it has
 // one, as a second shape filling the clipped stroke band in the stroke's colour.
 std::vector<SvgShape> clippedShapes(const SvgShape& shape, const Region& clip, double tolerance) {
@@ -1823,16 +1882,15 @@ SvgDocument readSvgString(const std::string& text, const std::string& name, cons
     }
     shape.fill = resolvePaint(state, pending.fill, pending.color, pending.fillOpacity, pending.description);
     shape.stroke = resolvePaint(state, pending.stroke, pending.color, pending.strokeOpacity, pending.description);
-    if (pending.clips.empty()) {
-      document.shapes.push_back(std::move(shape));
-      continue;
+    std::vector<SvgShape> parts = withStretchedStroke(std::move(shape), pending, tolerance);
+    std::optional<Region> clip = pending.clips.empty() ? std::nullopt : clipRegion(state, pending, tolerance);
+    for (SvgShape& part : parts) {
+      if (!clip) {
+        document.shapes.push_back(std::move(part));
+        continue;
+      }
+      for (SvgShape& clipped : clippedShapes(part, *clip, tolerance)) document.shapes.push_back(std::move(clipped));
     }
-    std::optional<Region> clip = clipRegion(state, pending, tolerance);
-    if (!clip) {
-      document.shapes.push_back(std::move(shape));
-      continue;
-    }
-    for (SvgShape& clipped : clippedShapes(shape, *clip, tolerance)) document.shapes.push_back(std::move(clipped));
   }
   return document;
 }

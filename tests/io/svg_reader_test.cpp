@@ -590,6 +590,31 @@ TEST(SvgReaderStroke, ZeroLengthSubpathsWithRoundOrSquareCapsAreDots) {
   EXPECT_EQ(both.shapes[0].subpaths.size(), 2u);
 }
 
+// A transform that scales x and y apart widens a stroke more in one direction, as browsers
+// draw it (flag-icons stretch their stripes and saltires): the stroke becomes a filled shape
+// of its colour, after the shape's own fill. A 10-wide line under scale(1 2) is 20 wide.
+TEST(SvgReaderStroke, StretchedStrokesAreAsWideAsTheTransformMakesThem) {
+  EXPECT_NEAR(paintedArea(R"~(<path d="M0 20 H100" fill="none" stroke="#000" stroke-width="10" )~"
+                          R"~(transform="scale(1 2)"/>)~"),
+              2000.0, 1e-6);
+  SvgDocument square = read(R"~(<rect id="box" width="10" height="10" fill="#f00" stroke="#00f" stroke-width="2" )~"
+                            R"~(transform="matrix(-2 0 0 1 30 0)"/>)~");
+  ASSERT_EQ(square.shapes.size(), 2u);
+  EXPECT_EQ(square.shapes[0].id, "box");
+  EXPECT_EQ(*square.shapes[0].fill, (Color{255, 0, 0, 1.0}));
+  EXPECT_FALSE(square.shapes[0].stroke.has_value());
+  EXPECT_EQ(square.shapes[1].id, "box-stroke");
+  EXPECT_EQ(*square.shapes[1].fill, (Color{0, 0, 255, 1.0}));
+  // The band between 24 × 12 and 16 × 8 (miter corners), mirrored without harm.
+  EXPECT_NEAR(area(filledRegion(square.shapes[1])), 24.0 * 12.0 - 16.0 * 8.0, 1e-6);
+  // Lines drawn as a stroke leave no empty fill behind (it would be "a path that paints no area").
+  SvgDocument lines = read(R"~(<path d="M0 10 H100 M0 30 H100" stroke="#f00" stroke-width="5" transform="scale(1 2)"/>)~");
+  ASSERT_EQ(lines.shapes.size(), 1u);
+  EXPECT_EQ(*lines.shapes[0].fill, (Color{255, 0, 0, 1.0}));
+  // A uniform scale keeps the stroke a stroke.
+  EXPECT_TRUE(read(R"~(<path d="M0 0 H10" stroke="#000" transform="rotate(30) scale(2)"/>)~").shapes[0].stroke);
+}
+
 // Effects Pak does not draw each give a warning naming the property, on shapes and on
 // groups, from attributes and from style; none (or normal) is no effect; hidden or defined
 // things do not warn.
