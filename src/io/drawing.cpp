@@ -2,6 +2,9 @@
 // draw exactly what the reader understood.
 #include "pak/io/drawing.hpp"
 
+#include <algorithm>
+#include <string>
+
 #include "pak/io/svg_reader.hpp"
 
 namespace pak {
@@ -27,18 +30,22 @@ Drawing drawingFromDocument(const SvgDocument& document) {
   drawing.height = document.height;
   drawing.widthText = document.widthText;
   drawing.heightText = document.heightText;
-  // One group per layer, in the order layers first appear; shapes keep their document
-  // order inside their layer. Shapes outside any layer share a group without id.
+  // Shapes in document order, which is the order they are painted in: one group per run of
+  // shapes of one layer, named by the layer. A layer that comes back after another (a group
+  // with an id, copied by a <use> further on) keeps its name on its first run only, so that
+  // ids stay unique. Shapes outside any layer are in groups without id.
+  std::vector<std::string> named;
+  std::string runLayer;
   for (const SvgShape& shape : document.shapes) {
-    DrawingGroup* group = nullptr;
-    for (DrawingGroup& existing : drawing.groups)
-      if (existing.id == shape.layer) group = &existing;
-    if (!group) {
+    if (drawing.groups.empty() || shape.layer != runLayer) {
+      runLayer = shape.layer;
       drawing.groups.emplace_back();
-      group = &drawing.groups.back();
-      group->id = shape.layer;
+      if (std::find(named.begin(), named.end(), runLayer) == named.end()) {
+        drawing.groups.back().id = runLayer;
+        named.push_back(runLayer);
+      }
     }
-    group->shapes.push_back({shape, shape.id});
+    drawing.groups.back().shapes.push_back({shape, shape.id});
   }
   return drawing;
 }

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "io/drawing_layers.hpp"
 #include "io/scene_layers.hpp"
 #include "pak/error.hpp"
 #include "pak/io/packing_reader.hpp"
@@ -331,6 +332,9 @@ LoadedElement elementFromDocument(const SvgDocument& document) {
       }
       continue;
     }
+    // A shape with neither fill nor stroke shows nothing and is no mistake: outline icon sets
+    // put an invisible frame in every icon (tabler's `M0 0h24v24H0z`).
+    if (!shape.fill && !shape.stroke) continue;
     element.shapes.push_back(shape);
     loaded.shapes.push_back(shape);
     artIndices.push_back(i);
@@ -367,21 +371,23 @@ LoadedElement elementFromDocument(const SvgDocument& document) {
 }
 
 std::vector<LoadedElement> elementsFromDocument(const SvgDocument& document) {
-  std::map<int, std::vector<SvgShape>> byGroup;
-  for (const SvgShape& shape : document.shapes) byGroup[shape.topGroup].push_back(shape);
-  const auto groups = std::count_if(byGroup.begin(), byGroup.end(), [](const auto& g) { return g.first >= 0; });
-  if (groups < 2) return {elementFromDocument(document)};
+  const std::vector<std::vector<int>> drawings = drawingsOfGroups(document);
+  if (drawings.size() < 2) return {elementFromDocument(document)};
 
   std::vector<LoadedElement> elements;
   std::vector<std::string> failures;
-  for (auto& [group, shapes] : byGroup) {
+  for (const std::vector<int>& groups : drawings) {
     SvgDocument part = document;
-    part.shapes = std::move(shapes);
-    // Named by the group: the layer name the reader gave its shapes when they share one.
+    part.shapes.clear();
+    for (const SvgShape& shape : document.shapes)
+      if (std::find(groups.begin(), groups.end(), shape.topGroup) != groups.end()) part.shapes.push_back(shape);
+    // Named by its first group: the layer name the reader gave its shapes when they share one.
+    const int group = groups.front();
     std::string name = stemOf(document.file);
     const std::string& layer = part.shapes.front().layer;
-    const bool shared = !layer.empty() && std::all_of(part.shapes.begin(), part.shapes.end(),
-                                                      [&](const SvgShape& s) { return s.layer == layer; });
+    const bool shared = !layer.empty() && std::all_of(part.shapes.begin(), part.shapes.end(), [&](const SvgShape& s) {
+      return s.layer == layer || s.topGroup != group;
+    });
     if (group >= 0) name = shared ? layer : name + "-" + std::to_string(group + 1);
     try {
       LoadedElement element = elementFromDocument(part);

@@ -109,6 +109,21 @@ Affine operator*(const Affine& m, const Affine& n) {
           m.b * n.c + m.d * n.d, m.a * n.e + m.c * n.f + m.e, m.b * n.e + m.d * n.f + m.f};
 }
 
+std::optional<Affine> inverse(const Affine& m) {
+  const double det = m.a * m.d - m.b * m.c;
+  if (!(std::abs(det) > 0.0) || !std::isfinite(1.0 / det)) return std::nullopt;
+  return Affine{m.d / det, -m.b / det, -m.c / det, m.a / det, (m.c * m.f - m.d * m.e) / det,
+                (m.b * m.e - m.a * m.f) / det};
+}
+
+// Does m stretch lengths differently in different directions (scale x and y apart, or skew)?
+// Then no one width is the width of a stroke it transforms. A similarity's columns are
+// orthogonal and equally long.
+bool stretches(const Affine& m) {
+  const double x = m.a * m.a + m.b * m.b, y = m.c * m.c + m.d * m.d;
+  return std::abs(m.a * m.c + m.b * m.d) > 1e-9 * (x + y) || std::abs(x - y) > 1e-9 * (x + y);
+}
+
 // ---------------------------------------------------------------------------------------
 // Paint as written in the file; resolved to a Color once the whole document is read
 // (a gradient may be defined after the shape that uses it).
@@ -180,6 +195,9 @@ struct PendingShape {
   double fillOpacity = 1.0, strokeOpacity = 1.0;
   std::uint32_t color = 0;
   std::string description;  // for messages: <path id="…">
+  // The transform, when it stretches (see `stretches`), and the stroke width before it.
+  std::optional<Affine> stretch;
+  double localStrokeWidth = 1.0;
 };
 
 struct GradientStop {
@@ -240,6 +258,7 @@ struct ReaderState {
   std::vector<const XmlNode*> topGroupNodes;  // by SvgShape::topGroup
   std::vector<FixedLayerSource> fixedLayers;
   int currentTopGroup = -1;  // of the element being read: what its warnings are about
+  std::set<std::string> ids;  // of every element: a paint server that is not among them is missing
 
   void warn(const std::string& where, const std::string& message) {
     document->warnings.push_back({file + (where.empty() ? "" : ": " + where), message, currentTopGroup});
@@ -277,11 +296,20 @@ class NodeContext;
 struct ErrorPolicy {
   using context_type = NodeContext;  // every context derives from it
 
+  // Named by itself, <tag id="…">: the element read last may be a sibling's child.
   template <class Context, class XmlElement, class Name>
-  static bool unknown_element(const Context&, const XmlElement&, const Name& name) {
-    if (currentReader)
-      currentReader->warn(currentReader->currentElement,
-                          "unknown element <" + toString(name) + "> skipped");
+  static bool unknown_element(const Context&, const XmlElement& element, const Name& name) {
+    if (!currentReader) return true;
+    const std::string tag = toString(name);
+    std::string where = "<" + tag;
+    for (auto* a = element->first_attribute(); a; a = a->next_attribute())
+      if (std::string_view(a->name(), a->name_size()) == "id")
+        where += " id=\"" + std::string(a->value(), a->value_size()) + "\"";
+    where += ">";
+    // Inkscape 0.92 wrote text in a frame as <flowRoot>: text, as far as the artist knows.
+    currentReader->warn(where, tag == "flowRoot"
+                                   ? "<flowRoot> (flowed text) is not supported; skipped (convert it to paths)"
+                                   : "unknown element <" + tag + "> skipped");
     return true;
   }
   template <class Context, class... Rest>
@@ -371,16 +399,18 @@ std::string attributeOf(const XmlNode* node, std::string_view name) {
   return {};
 }
 
-std::string inkscapeLabel(const XmlNode* node) {
+// An attribute in Inkscape's namespace (inkscape:label, inkscape:groupmode), by its local name.
+std::string inkscapeAttribute(const XmlNode* node, std::string_view name) {
   for (auto* a = node->first_attribute(); a; a = a->next_attribute()) {
     std::string_view local(a->local_name(), a->local_name_size());
     std::string_view ns(a->namespace_uri(), a->namespace_uri_size());
     std::string_view qname(a->name(), a->name_size());
-    if (local == "label" && (ns == kInkscapeNamespace || qname == "inkscape:label"))
+    if (local == name && (ns == kInkscapeNamespace || qname == "inkscape:" + std::string(name)))
       return std::string(a->value(), a->value_size());
   }
   return {};
 }
+std::string inkscapeLabel(const XmlNode* node) { return inkscapeAttribute(node, "label"); }
 
 // A presentation property as the element gives it: its style="…" declaration (stylesheets
 // already folded in) wins over the attribute; "" when it has neither.
@@ -470,6 +500,7 @@ class NodeContext {
         SvgTopGroup& top = state_->document->topGroups.emplace_back();
         top.name = inkscapeLabel(node);
         if (top.name.empty()) top.name = id_;
+        state_->document->inkscapeLayers.push_back(inkscapeAttribute(node, "groupmode") == "layer");
       }
       if (parent.isLayerGroup_) layerGroup_ = parent.childGroups_++;
       enterGroupLayer();
@@ -805,6 +836,30 @@ class ShapeContext : public NodeContext {
     segment.end = local(x, y);
     append(segment);
   }
+  // An arc as SVG's implementation notes (F.6.2) say: none between one point and itself, a
+  // line when a radius is zero, else cubics of at most a quarter turn each (radii too small
+  // to reach the end scaled up by SVG++).
+  void path_elliptical_arc_to(double rx, double ry, double xAxisRotation, bool largeArc, bool sweep, double x,
+                              double y, tag::coordinate::absolute) {
+    const Vec2 from = current_, to = local(x, y);
+    if (from == to) return;
+    if (!(rx > 0.0) || !(ry > 0.0)) {
+      path_line_to(x, y, tag::coordinate::absolute());
+      return;
+    }
+    const double rotation = xAxisRotation * boost::math::constants::degree<double>();
+    double cx = 0, cy = 0, theta1 = 0, theta2 = 0;
+    svgpp::arc_endpoint_to_center(from.x, from.y, to.x, to.y, rx, ry, rotation, largeArc, sweep, cx, cy, theta1,
+                                  theta2);
+    constexpr double turn = boost::math::constants::two_pi<double>();
+    if (sweep && theta2 < theta1) theta2 += turn;
+    if (!sweep && theta2 > theta1) theta2 -= turn;
+    using ArcToCubics = svgpp::arc_to_bezier<double>;
+    ArcToCubics cubics(cx, cy, rx, ry, rotation, ArcToCubics::circle_angle_tag(), theta1, theta2,
+                       ArcToCubics::max_angle_tag(), boost::math::constants::half_pi<double>());
+    for (ArcToCubics::iterator it(cubics); !it.eof(); it.advance())
+      path_cubic_bezier_to(it.p1x(), it.p1y(), it.p2x(), it.p2y(), it.p3x(), it.p3y(), tag::coordinate::absolute());
+  }
   void path_close_subpath() {
     if (subpaths_.empty()) return;
     subpaths_.back().closed = true;
@@ -835,6 +890,8 @@ class ShapeContext : public NodeContext {
     pending.subpaths = std::move(subpaths_);
     SvgShape& shape = pending.shape;
     shape.strokeWidth = style_.strokeWidth;
+    if (stretches(m)) pending.stretch = m;
+    pending.localStrokeWidth = style_.strokeWidth;
     shape.opacity = effectiveOpacity();
     shape.fillRule = style_.fillRule;
     shape.lineCap = style_.lineCap;
@@ -1050,9 +1107,15 @@ using ProcessedAttributes =
                         StyleAttributes>,
               StructureAttributes>;
 
+// SVG++'s minimal path events, except arcs: they come to ShapeContext as arcs, because SVG++
+// converts them to cubics without SVG's special cases (a zero radius gave NaN).
+struct PathEvents : svgpp::policy::path::minimal {
+  static const bool arc_as_cubic_bezier = false;
+};
+
 using DocumentTraversal = svgpp::document_traversal<
     svgpp::processed_elements<ProcessedElements>, svgpp::processed_attributes<ProcessedAttributes>,
-    svgpp::context_factories<ContextFactories>, svgpp::path_policy<svgpp::policy::path::minimal>,
+    svgpp::context_factories<ContextFactories>, svgpp::path_policy<PathEvents>,
     svgpp::length_policy<svgpp::policy::length::forward_to_method<NodeContext>>,
     svgpp::error_policy<ErrorPolicy>, svgpp::attribute_traversal_policy<AttributeOrder>>;
 
@@ -1140,7 +1203,12 @@ std::optional<Color> resolvePaint(ReaderState& state, const Paint& paint, std::u
     return Color{channel(r), channel(g), channel(b), alpha * a / n};
   }
   if (paint.fallback) return resolveSolid(*paint.fallback, currentColor, alpha);
-  state.warn(where, "paint server #" + paint.server + " is missing or not supported; painted grey");
+  // A reference to nothing paints nothing, as in a browser (SVG 2: treated as none).
+  if (!state.ids.count(paint.server)) {
+    state.warn(where, "paint server #" + paint.server + " does not exist; not painted");
+    return std::nullopt;
+  }
+  state.warn(where, "paint server #" + paint.server + " is not supported; painted grey");
   return colorFrom(0x808080, alpha);
 }
 
@@ -1766,6 +1834,45 @@ void appendRegion(SvgShape& shape, const Region& region) {
   }
 }
 
+// A stroke under a stretching transform, as a browser draws it: outlined in the shape's own
+// coordinates, where it has one width, then transformed. It becomes a second shape filling
+// the band in the stroke's colour; the first keeps the fill. A transform that cannot be
+// undone keeps the stroke as it is.
+std::vector<SvgShape> withStretchedStroke(SvgShape shape, const PendingShape& pending, double tolerance) {
+  const std::optional<Affine> back = pending.stretch ? inverse(*pending.stretch) : std::nullopt;
+  if (!back || !shape.stroke || !(shape.strokeWidth > 0.0)) return {std::move(shape)};
+  const Affine& m = *pending.stretch;
+  Shape local = shape;
+  local.fill.reset();
+  local.strokeWidth = pending.localStrokeWidth;
+  for (Subpath& subpath : local.subpaths)
+    for (Vec2& p : subpath.points) p = back->apply(p);
+  // The grid fine enough after the transform's largest stretch.
+  const double largest = std::sqrt(std::max(m.a * m.a + m.b * m.b, m.c * m.c + m.d * m.d));
+  Region band = paintedRegion(local, clipOptionsFor(tolerance / std::max(largest, 1e-12)));
+  for (Polygon& polygon : band) {
+    for (Vec2& p : polygon.outer) p = m.apply(p);
+    for (Ring& hole : polygon.holes)
+      for (Vec2& p : hole) p = m.apply(p);
+  }
+  normalizeOrientation(band);  // a mirroring transform turns the rings around
+
+  std::vector<SvgShape> out;
+  SvgShape stroke = shape;
+  stroke.subpaths.clear();
+  stroke.fill = shape.stroke;
+  stroke.stroke.reset();
+  stroke.fillRule = FillRule::EvenOdd;  // disjoint polygons with their holes
+  if (!stroke.id.empty() && shape.fill) stroke.id += "-stroke";  // ids stay unique
+  appendRegion(stroke, band);
+  shape.stroke.reset();
+  // The fill of open lines (SVG's default black on a path drawn as a stroke) paints nothing.
+  const ClipOptions options = clipOptionsFor(tolerance);
+  if (shape.fill && area(filledRegion(shape, options)) > 0.0) out.push_back(std::move(shape));
+  if (!stroke.subpaths.empty()) out.push_back(std::move(stroke));
+  return out;
+}
+
 // The shape cut by the clip: its fill as the clipped filled region; its stroke, when it has
 // one, as a second shape filling the clipped stroke band in the stroke's colour.
 std::vector<SvgShape> clippedShapes(const SvgShape& shape, const Region& clip, double tolerance) {
@@ -1825,6 +1932,9 @@ SvgDocument readSvgString(const std::string& text, const std::string& name, cons
   state.lines = &lines;
   state.document = &document;
   expandUses(xml, root, state, lines);
+  forEachElement(root, [&](XmlNode* node) {
+    if (std::string id = attributeOf(node, "id"); !id.empty()) state.ids.insert(std::move(id));
+  });
   state.lengths.set_viewport_size(0, 0);  // no percentages until a viewBox or size is known
   {
     CurrentReaderScope scope(&state);
@@ -1894,18 +2004,17 @@ SvgDocument readSvgString(const std::string& text, const std::string& name, cons
     }
     shape.fill = resolvePaint(state, pending.fill, pending.color, pending.fillOpacity, pending.description);
     shape.stroke = resolvePaint(state, pending.stroke, pending.color, pending.strokeOpacity, pending.description);
-    if (pending.clips.empty()) {
-      document.shapes.push_back(std::move(shape));
-      continue;
-    }
-    std::optional<Region> clip = clipRegion(state, pending, tolerance);
-    if (!clip) {
-      document.shapes.push_back(std::move(shape));
-      continue;
-    }
-    if (shape.stroke && !shape.dashArray.empty())
+    std::optional<Region> clip = pending.clips.empty() ? std::nullopt : clipRegion(state, pending, tolerance);
+    if (clip && shape.stroke && !shape.dashArray.empty())
       state.warn(pending.description, "stroke-dasharray under a clip-path: the clipped stroke is drawn solid");
-    for (SvgShape& clipped : clippedShapes(shape, *clip, tolerance)) document.shapes.push_back(std::move(clipped));
+    std::vector<SvgShape> parts = withStretchedStroke(std::move(shape), pending, tolerance);
+    for (SvgShape& part : parts) {
+      if (!clip) {
+        document.shapes.push_back(std::move(part));
+        continue;
+      }
+      for (SvgShape& clipped : clippedShapes(part, *clip, tolerance)) document.shapes.push_back(std::move(clipped));
+    }
   }
   state.currentTopGroup = -1;
   return document;

@@ -191,6 +191,17 @@ TEST(ElementLoader, WarnsAboutZeroAreaPathsAndOpenFills) {
   EXPECT_NEAR(area(element.element.outline), 100 + 50, 1e-3);
 }
 
+// A shape with neither fill nor stroke (the invisible frame of outline icon sets) is not art
+// and no mistake: no warning.
+TEST(ElementLoader, InvisibleShapesAreSkippedSilently) {
+  const LoadedElement element = elementFromDocument(svgDocument(R"~(
+      <path d="M0 0h24v24H0z" fill="none" stroke="none"/>
+      <path d="M4 4 H10 V10 H4 Z"/>)~"));
+  EXPECT_EQ(element.element.shapes.size(), 1u);
+  EXPECT_TRUE(element.warnings.empty()) << element.warnings.front().message;
+  EXPECT_NEAR(area(element.element.outline), 36.0, 1e-9);
+}
+
 TEST(ElementLoaderErrors, ZeroAreaElement) {
   const std::string message = errorOf([] {
     elementFromDocument(svgDocument(R"~(<path d="M0 0 L10 0 L20 0 Z"/><path d="M0 0 L10 10" fill="none"/>)~", "flat.svg"));
@@ -279,6 +290,23 @@ TEST(DrawingFromDocument, OneGroupPerLayerInOrder) {
   EXPECT_EQ(drawing.groups[1].shapes[0].id, "c1");
   EXPECT_EQ(drawing.groups[1].shapes[1].id, "c2");
   EXPECT_EQ(drawing.groups[2].id, "fixed");
+}
+
+// Shapes are drawn in document order even when a layer comes back after other shapes (a
+// group with an id copied by a <use> further on, as flag-icons' gi.svg does): the black
+// behind comes before the red in front. The name stays on the layer's first run.
+TEST(DrawingFromDocument, LayersThatComeBackKeepTheDocumentOrder) {
+  Drawing drawing = drawingFromDocument(svgDocument(R"~(
+      <g id="tower"><rect id="behind" width="10" height="10" fill="#000"/></g>
+      <rect id="front" width="5" height="5" fill="#f00"/>
+      <use href="#tower" x="20"/>)~"));
+  ASSERT_EQ(drawing.groups.size(), 3u);
+  EXPECT_EQ(drawing.groups[0].id, "tower");
+  EXPECT_EQ(drawing.groups[0].shapes[0].id, "behind");
+  EXPECT_EQ(drawing.groups[1].id, "");
+  EXPECT_EQ(drawing.groups[1].shapes[0].id, "front");
+  EXPECT_EQ(drawing.groups[2].id, "");
+  EXPECT_EQ(drawing.groups[2].shapes[0].id, "behind");
 }
 
 }  // namespace

@@ -136,6 +136,15 @@ TEST(SvgReaderPath, ArcRadiiTooSmallAreScaledUp) {
   EXPECT_NEAR(fillArea(R"~(<path d="M40 50 A1 1 0 0 1 60 50 Z"/>)~"), half, half * 2e-3);
 }
 
+// SVG's special cases (OpenMoji draws square corners as `a0,0,0,0,1,0,0`): an arc to its own
+// start is nothing, a zero radius is a line.
+TEST(SvgReaderPath, DegenerateArcsAsSvgSpecifies) {
+  EXPECT_NEAR(fillArea(R"~(<path d="M0 0 H10 a0,0,0,0,1,0,0 V10 H0 Z"/>)~"), 100.0, 1e-9);
+  EXPECT_NEAR(fillArea(R"~(<path d="M0 0 H10 a5 5 0 0 1 0 0 V10 H0 Z"/>)~"), 100.0, 1e-9);
+  EXPECT_NEAR(fillArea(R"~(<path d="M0 0 H10 a0 5 0 0 1 0 10 H0 Z"/>)~"), 100.0, 1e-9);
+  EXPECT_NEAR(fillArea(R"~(<path d="M0 0 H10 A5 0 0 0 1 10 10 H0 Z"/>)~"), 100.0, 1e-9);
+}
+
 TEST(SvgReaderPath, QuadraticCurveArea) {
   // A parabolic segment: 2/3 of base × height; the curve peaks at half the control height.
   const double segment = 2.0 / 3.0 * 20 * 10;
@@ -388,6 +397,19 @@ TEST(SvgReaderPaint, GradientBecomesTheMeanOfItsStops) {
   EXPECT_FALSE(document.warnings.empty());
 }
 
+// A paint server that is not in the file paints nothing, as in a browser (flag-icons' sh-ac
+// refers to gradients it lacks); one that is there but not supported (a pattern) is grey.
+TEST(SvgReaderPaint, MissingPaintServerPaintsNothing) {
+  SvgDocument document = read(R"~(<defs><pattern id="dots" width="2" height="2"/></defs>
+      <rect id="lost" width="10" height="10" fill="url(#nowhere)" stroke="url(#dots)"/>)~");
+  ASSERT_EQ(document.shapes.size(), 1u);
+  EXPECT_FALSE(document.shapes[0].fill.has_value());
+  EXPECT_EQ(*document.shapes[0].stroke, (Color{128, 128, 128, 1.0}));
+  ASSERT_EQ(document.warnings.size(), 2u);
+  EXPECT_NE(document.warnings[0].message.find("#nowhere does not exist; not painted"), std::string::npos);
+  EXPECT_NE(document.warnings[1].message.find("#dots is not supported; painted grey"), std::string::npos);
+}
+
 TEST(SvgReaderPaint, StylesheetClassesLikeIllustratorWrites) {
   SvgDocument document = read(R"~(<defs><style><![CDATA[
         /* Illustrator's internal CSS */
@@ -445,6 +467,17 @@ TEST(SvgReaderVisibility, TextAndImageAreSkippedWithAWarning) {
   for (const Warning& warning : document.warnings)
     if (warning.message.find("not supported") != std::string::npos) ++skipped;
   EXPECT_EQ(skipped, 2);
+}
+
+// Inkscape's flowed text (<flowRoot>, in its examples) is text to the artist, and the warning
+// names the element itself, not the shape read before it.
+TEST(SvgReaderVisibility, FlowedTextIsSkippedAsText) {
+  SvgDocument document = read(R"~(<rect id="before" width="1" height="1"/>
+      <flowRoot id="note"><flowRegion><rect width="50" height="50"/></flowRegion><flowPara>Hi</flowPara></flowRoot>)~");
+  EXPECT_EQ(document.shapes.size(), 1u);
+  ASSERT_EQ(document.warnings.size(), 1u);
+  EXPECT_EQ(document.warnings[0].where, "test.svg: <flowRoot id=\"note\">");
+  EXPECT_NE(document.warnings[0].message.find("(flowed text) is not supported"), std::string::npos);
 }
 
 // ---- <use> ---------------------------------------------------------------------------------
@@ -624,6 +657,31 @@ TEST(SvgReaderStroke, ZeroLengthSubpathsWithRoundOrSquareCapsAreDots) {
   SvgDocument both = read(R"~(<path d="M10 10 H30 M50 50 h0" fill="none" stroke="#000" stroke-linecap="round"/>)~");
   ASSERT_EQ(both.shapes.size(), 1u);
   EXPECT_EQ(both.shapes[0].subpaths.size(), 2u);
+}
+
+// A transform that scales x and y apart widens a stroke more in one direction, as browsers
+// draw it (flag-icons stretch their stripes and saltires): the stroke becomes a filled shape
+// of its colour, after the shape's own fill. A 10-wide line under scale(1 2) is 20 wide.
+TEST(SvgReaderStroke, StretchedStrokesAreAsWideAsTheTransformMakesThem) {
+  EXPECT_NEAR(paintedArea(R"~(<path d="M0 20 H100" fill="none" stroke="#000" stroke-width="10" )~"
+                          R"~(transform="scale(1 2)"/>)~"),
+              2000.0, 1e-6);
+  SvgDocument square = read(R"~(<rect id="box" width="10" height="10" fill="#f00" stroke="#00f" stroke-width="2" )~"
+                            R"~(transform="matrix(-2 0 0 1 30 0)"/>)~");
+  ASSERT_EQ(square.shapes.size(), 2u);
+  EXPECT_EQ(square.shapes[0].id, "box");
+  EXPECT_EQ(*square.shapes[0].fill, (Color{255, 0, 0, 1.0}));
+  EXPECT_FALSE(square.shapes[0].stroke.has_value());
+  EXPECT_EQ(square.shapes[1].id, "box-stroke");
+  EXPECT_EQ(*square.shapes[1].fill, (Color{0, 0, 255, 1.0}));
+  // The band between 24 × 12 and 16 × 8 (miter corners), mirrored without harm.
+  EXPECT_NEAR(area(filledRegion(square.shapes[1])), 24.0 * 12.0 - 16.0 * 8.0, 1e-6);
+  // Lines drawn as a stroke leave no empty fill behind (it would be "a path that paints no area").
+  SvgDocument lines = read(R"~(<path d="M0 10 H100 M0 30 H100" stroke="#f00" stroke-width="5" transform="scale(1 2)"/>)~");
+  ASSERT_EQ(lines.shapes.size(), 1u);
+  EXPECT_EQ(*lines.shapes[0].fill, (Color{255, 0, 0, 1.0}));
+  // A uniform scale keeps the stroke a stroke.
+  EXPECT_TRUE(read(R"~(<path d="M0 0 H10" stroke="#000" transform="rotate(30) scale(2)"/>)~").shapes[0].stroke);
 }
 
 // Effects Pak does not draw each give a warning naming the property, on shapes and on

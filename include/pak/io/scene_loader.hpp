@@ -51,7 +51,9 @@ struct LoadedElement {
 // given twice is an InputError.
 // Throws InputError when the element paints no area.
 LoadedElement elementFromDocument(const SvgDocument& document);
-// An SVG whose root has several top-level groups gives one element per group.
+// An SVG whose root has several top-level groups gives one element per group, except that
+// groups that are layers of one drawing (their painted boxes overlap, or they are Inkscape
+// layers: src/io/drawing_layers.hpp) make one element together.
 std::vector<LoadedElement> elementsFromDocument(const SvgDocument& document);
 // Files and folders (every .svg and .path inside, sorted by name), each element as read.
 std::vector<LoadedElement> loadElements(const std::vector<std::string>& pathsOrFolders, const SvgReadOptions& = {});

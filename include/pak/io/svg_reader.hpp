@@ -38,6 +38,9 @@ struct SvgDocument {
   std::string widthText, heightText;
   std::vector<std::string> layers;   // names of the layers found, lower-cased, in order
   std::vector<SvgShape> shapes;      // in document order, in viewBox coordinates
+  // For each top-level <g> (indexed by SvgShape::topGroup): is it an Inkscape layer
+  // (inkscape:groupmode="layer")?
+  std::vector<bool> inkscapeLayers;
   std::vector<Warning> warnings;     // things skipped and why
   // The visible `fixed` layers' children as written, in a <g> placing them, for outputs to copy
   // unchanged; empty when there is none or when a stylesheet styles them (outputs then re-draw
