@@ -239,8 +239,8 @@ void fitPieceLongest(const std::vector<Vec2>& p, std::size_t first, std::size_t 
       if (bestEnd != good) fits(good);
     }
     out.push_back(best);
-    startTangent = bestEnd == last ? t1 : -centreTangent(p, bestEnd);
     start = bestEnd;
+    if (start < last) startTangent = -centreTangent(p, start);
   }
 }
 

@@ -361,13 +361,15 @@ std::vector<std::size_t> offendingOutlines(std::vector<Region> outlines, const R
 int smoothWhereClean(Packing& packing, const std::vector<std::vector<Shape>>& linearArt) {
   constexpr int kRounds = 4;  // then every element left smooth is reverted too
   std::vector<char> linear(packing.elements.size(), 0);
+  std::vector<std::vector<Ring>> straight;  // the linear art's rings, the same every round
+  for (const std::vector<Shape>& art : linearArt) straight.push_back(artRings(art));
   for (int round = 0; round <= kRounds; ++round) {
     std::vector<std::size_t> revert = artOffenders(packing);
     for (std::size_t e = 0; e < packing.elements.size(); ++e) {
       if (linear[e]) continue;
-      const std::vector<Ring> drawn = artRings(packing.elements[e].art), straight = artRings(linearArt[e]);
-      for (std::size_t r = 0; r < drawn.size() && r < straight.size(); ++r)
-        if (ringSelfIntersects(drawn[r]) && !ringSelfIntersects(straight[r])) {
+      const std::vector<Ring> drawn = artRings(packing.elements[e].art);
+      for (std::size_t r = 0; r < drawn.size() && r < straight[e].size(); ++r)
+        if (ringSelfIntersects(drawn[r]) && !ringSelfIntersects(straight[e][r])) {
           revert.push_back(e);
           break;
         }
