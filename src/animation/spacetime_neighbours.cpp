@@ -61,6 +61,8 @@ SpacetimeNeighbours::SpacetimeNeighbours(Layout layout, ThreadPool& pool) : layo
   groups_.assign(nt, {});
   vertexCell_.assign(nv, 0);
   candidatesOf_.assign(cells, {});
+  moved_.assign(nv, 0.0);
+  triangleMoved_.assign(nt, 0.0);
   lists_.assign(nv, {});
   chunks_.resize((nv + kChunk - 1) / kChunk);
 }
@@ -76,6 +78,8 @@ int SpacetimeNeighbours::cellOf(Vec3 p) const {
 void SpacetimeNeighbours::rebuild(const std::vector<Vec3>& origin) {
   assert(origin.size() == layout_.vertexElement.size());
   origin_ = origin;
+  std::fill(moved_.begin(), moved_.end(), 0.0);
+  std::fill(triangleMoved_.begin(), triangleMoved_.end(), 0.0);
   buildGrid();
   buildCandidates();
   pool_.parallelFor(chunks_.size(), 1, [&](std::size_t begin, std::size_t end) {
@@ -83,10 +87,27 @@ void SpacetimeNeighbours::rebuild(const std::vector<Vec3>& origin) {
   });
 }
 
-bool SpacetimeNeighbours::stale(const std::vector<Vec3>& positions) const {
-  const double limit = 0.25 * layout_.margin * layout_.margin;  // (margin / 2)²
-  for (std::size_t v = 0; v < positions.size(); ++v)
-    if (layout_.isSkin[v] && lengthSquared(positions[v] - origin_[v]) > limit) return true;
+bool SpacetimeNeighbours::track(const std::vector<Vec3>& positions) {
+  const double limit = 0.5 * layout_.margin;
+  // Per chunk of vertices, whether one moved past the limit (a fixed split: no shared flag).
+  const std::size_t nv = positions.size(), chunks = (nv + kChunk - 1) / kChunk;
+  std::vector<std::uint8_t>& past = stalePerChunk_;
+  past.assign(chunks, 0);
+  pool_.parallelFor(chunks, 8, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t c = begin; c < end; ++c)
+      for (std::size_t v = c * kChunk; v < std::min(nv, (c + 1) * kChunk); ++v)
+        if (layout_.isSkin[v]) {
+          moved_[v] = std::sqrt(lengthSquared(positions[v] - origin_[v]));
+          if (moved_[v] > limit) past[c] = 1;
+        }
+  });
+  if (std::find(past.begin(), past.end(), 1) != past.end()) return true;
+  pool_.parallelFor(layout_.triangles.size(), 4096, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      const auto& c = layout_.triangles[i];
+      triangleMoved_[i] = std::max({moved_[c[0]], moved_[c[1]], moved_[c[2]]});
+    }
+  });
   return false;
 }
 
@@ -203,7 +224,7 @@ void SpacetimeNeighbours::buildCandidates() {
 void SpacetimeNeighbours::buildLists(int chunkIndex) {
   Chunk& chunk = chunks_[chunkIndex];
   chunk.near.clear();
-  chunk.reach.clear();
+  chunk.distance.clear();
   chunk.far.clear();
   const double reach = layout_.cellSize, margin = layout_.margin;
   const double listReach = reach + margin;
@@ -261,7 +282,7 @@ void SpacetimeNeighbours::buildLists(int chunkIndex) {
       const std::size_t header = chunk.near.size();
       chunk.near.push_back(near[e].element);
       chunk.near.push_back(0);  // the count, below
-      chunk.reach.insert(chunk.reach.end(), 2, 0.0);
+      chunk.distance.insert(chunk.distance.end(), 2, 0.0);
       int count = 0;
       for (const Passing& passing : chunk.passing) {
         if (passing.slot != e || passing.bound2 > limit2) continue;
@@ -274,7 +295,7 @@ void SpacetimeNeighbours::buildLists(int chunkIndex) {
           if (d2 > limit2) continue;
           if (count == kListed) {  // beyond the sorted ones (not seen in practice): still listed
             chunk.near.push_back(tri);
-            chunk.reach.push_back(0.0);
+            chunk.distance.push_back(0.0);
             continue;
           }
           // Nearest first (ties by triangle), so that gather prunes early.
@@ -284,10 +305,10 @@ void SpacetimeNeighbours::buildLists(int chunkIndex) {
           listed[at] = {d2, tri};
         }
       }
-      // Nearest first after any overflow (reach 0), so gather stops at the first entry out of reach.
+      // Nearest first after any overflow (distance 0), so gather stops at the first entry out of reach.
       for (int i = 0; i < count; ++i) {
         chunk.near.push_back(listed[i].triangle);
-        chunk.reach.push_back(std::max(0.0, std::sqrt(listed[i].d2) - margin - kRoundingSlack));
+        chunk.distance.push_back(std::sqrt(listed[i].d2));
       }
       chunk.near[header + 1] = static_cast<int>(chunk.near.size() - header - 2);
     }
@@ -319,15 +340,21 @@ void SpacetimeNeighbours::gather(int v, const std::vector<Vec3>& positions, Hits
   const double shellReach2 = layout_.shellReach * layout_.shellReach;
   const Chunk& chunk = chunks_[v / kChunk];
   const VertexLists& lists = lists_[v];
+  const double margin = layout_.margin + kRoundingSlack, moved = moved_[v] + kRoundingSlack;
   for (int k = lists.nearBegin; k < lists.nearEnd;) {
     const int element = chunk.near[k], count = chunk.near[k + 1];
     const int* triangles = &chunk.near[k + 2];
-    const double* lowerBound = &chunk.reach[k + 2];
+    const double* distanceAtOrigin = &chunk.distance[k + 2];
     k += 2 + count;
     double best = reach2;
     Vec3 nearest;
     for (int i = 0; i < count; ++i) {
-      if (lowerBound[i] * lowerBound[i] >= best) break;  // this and the rest cannot be nearer
+      // Lower bounds on the triangle's distance now: the margin's, which grows along the list
+      // (so none after this one can be nearer), then the moves'.
+      const double bound = distanceAtOrigin[i] - margin;
+      if (bound > 0.0 && bound * bound >= best) break;
+      const double tighter = distanceAtOrigin[i] - moved - triangleMoved_[triangles[i]];
+      if (tighter > 0.0 && tighter * tighter >= best) continue;
       const auto& c = layout_.triangles[triangles[i]];
       const Vec3 a = positions[c[0]], b = positions[c[1]], d = positions[c[2]];
       if (distanceSquared(triangleBox(a, b, d), x) >= best) continue;

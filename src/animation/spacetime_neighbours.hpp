@@ -11,13 +11,20 @@
 // and a triangle come closer by at most the margin, so the nearest triangle of every element
 // within reach is among them: `gather` is exact from the lists alone, and stops at the first
 // listed triangle whose distance at the rebuild, less the margin, is no nearer than the best
-// found. The shell centres are kept from the rebuild. `stale` says when to rebuild.
+// found. The shell centres are kept from the rebuild. `track` says when to rebuild.
+//
+// Between rebuilds most vertices move far less than the margin allows (late in a run, half of
+// them under 0.5 of its 2 units). `track` measures each vertex's move since the origin, so
+// `gather` skips a listed triangle whose distance at the rebuild, less the query vertex's move
+// and its corners' largest move, is no nearer than the best found: a lower bound as exact as
+// the margin's, only tighter, so the hits are the same bit for bit.
 //
 // Everything depends only on the positions given to `rebuild` (the origin) and to `gather`,
 // so a checkpoint that keeps the origin resumes bit-identically. Work is split in fixed
 // chunks of vertices, each with its own buffers: results do not depend on the thread count,
 // and once the buffers have grown no step allocates.
 #include <array>
+#include <cstdint>
 #include <vector>
 
 #include "pak/geom/box3.hpp"
@@ -56,9 +63,11 @@ class SpacetimeNeighbours {
 
   // Candidate lists from `origin` (copied: the lists' positions).
   void rebuild(const std::vector<Vec3>& origin);
-  // Whether some vertex has moved more than half the margin from the origin.
-  bool stale(const std::vector<Vec3>& positions) const;
-  // The hits of skin vertex v at x = positions[v] (triangle corners read from `positions`).
+  // Measures how far each skin vertex has moved from the origin, and returns whether some
+  // vertex has moved more than half the margin (then `rebuild` before any `gather`).
+  bool track(const std::vector<Vec3>& positions);
+  // The hits of skin vertex v at x = positions[v] (triangle corners read from `positions`),
+  // which `track` has measured (or `rebuild` taken as the origin).
   void gather(int v, const std::vector<Vec3>& positions, Hits& hits) const;
 
   const std::vector<Vec3>& origin() const { return origin_; }
@@ -72,10 +81,10 @@ class SpacetimeNeighbours {
   struct VertexLists { int nearBegin = 0, nearEnd = 0, farBegin = 0, farEnd = 0; };
   // A group of another element that comes within the list reach of the vertex being listed.
   struct Passing { int group, slot; double bound2; };
-  // `reach[k]`, beside each listed triangle near[k], is its distance at the origin less the
-  // margin: a lower bound on its distance until the lists are stale (0 beside the headers).
+  // `distance[k]`, beside each listed triangle near[k], is its distance at the origin (0 beside
+  // the headers, and beside triangles listed past the sorted ones).
   struct Chunk {
-    std::vector<int> near; std::vector<double> reach; std::vector<Far> far;
+    std::vector<int> near; std::vector<double> distance; std::vector<Far> far;
     std::vector<Passing> passing;  // scratch for one vertex at a time
   };
   static constexpr int kChunk = 512;  // vertices per chunk
@@ -99,6 +108,10 @@ class SpacetimeNeighbours {
   // outer shell.
   std::vector<int> vertexCell_, queriedCells_, candidates_;
   std::vector<CellCandidates> candidatesOf_;
+  // How far each skin vertex, and the farthest-moved corner of each triangle, has moved from
+  // the origin (as `track` last measured it).
+  std::vector<double> moved_, triangleMoved_;
+  std::vector<std::uint8_t> stalePerChunk_;  // scratch for track
   // The lists.
   std::vector<VertexLists> lists_;
   std::vector<Chunk> chunks_;

@@ -439,7 +439,7 @@ void SpacetimeSimulation::step() {
   assert(finalized_ && "step only after finalize");
   const std::size_t nv = position_.size(), ns = growth_.size();
   pool_.parallelFor(nv, 2048, [&](std::size_t b, std::size_t e) { computeReferencePoints(b, e); });
-  if (neighbours_->stale(position_)) neighbours_->rebuild(position_);
+  if (neighbours_->track(position_)) neighbours_->rebuild(position_);
   pool_.parallelFor(nv, 256, [&](std::size_t b, std::size_t e) { computeForces(b, e); });
   pool_.parallelFor(nv, 4096, [&](std::size_t b, std::size_t e) { integrate(b, e); });
   pool_.parallelFor(elements_.size(), 1, [&](std::size_t b, std::size_t e) { applySliceConstraints(b, e); });
