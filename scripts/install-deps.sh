@@ -20,6 +20,8 @@ packages=(
   libxml2-utils         # xmllint: the tests check that every SVG is well-formed
   inkscape              # the Inkscape extension and its test; inkscape ships inkex, which
   python3-lxml python3-cssselect python3-numpy  # imports these (only recommended by inkscape)
+  python3-dev pybind11-dev  # the `pak` Python module (make python), built for Debian's python3
+  python3-pytest        # its tests (tests/python, run by make test)
 )
 
 docs_packages=(
