@@ -205,13 +205,17 @@ RgbaImage toRgba(cairo_surface_t* surface) {
 void writePngFile(const Drawing& drawing, const std::string& path, const PngOptions& options) {
   // Check the destination first: a missing folder should fail before seconds of rendering.
   checkOutputPath(path);  // throws InputError when the folder is missing or read-only
-  SurfacePtr surface = raster::renderSurface(drawing, options, path);
   // Encode in memory, then reuse the atomic writer: one code path for every output file.
+  writeFileAtomically(path, renderPng(drawing, options, path));
+}
+
+std::string renderPng(const Drawing& drawing, const PngOptions& options, const std::string& where) {
+  SurfacePtr surface = raster::renderSurface(drawing, options, where);
   std::string png;
   cairo_status_t status = cairo_surface_write_to_png_stream(surface.get(), appendToString, &png);
   if (status != CAIRO_STATUS_SUCCESS)
-    throw InputError(path, std::string("cannot encode PNG: ") + cairo_status_to_string(status));
-  writeFileAtomically(path, png);
+    throw InputError(where, std::string("cannot encode PNG: ") + cairo_status_to_string(status));
+  return png;
 }
 
 RgbaImage renderToImage(const Drawing& drawing, const PngOptions& options) {

@@ -27,6 +27,8 @@ struct RgbaImage {
 
 // Atomic write (temporary file + rename). Throws InputError if it cannot be written.
 void writePngFile(const Drawing& drawing, const std::string& path, const PngOptions& = {});
+// The PNG file's bytes, in memory (the Python module's to_png); errors name `where`.
+std::string renderPng(const Drawing& drawing, const PngOptions& = {}, const std::string& where = "");
 // The same picture writePngFile draws, as pixels. Throws InputError on an impossible size.
 RgbaImage renderToImage(const Drawing& drawing, const PngOptions& = {});
 
