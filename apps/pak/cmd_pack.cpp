@@ -14,6 +14,7 @@
 #include "output_files.hpp"
 #include "pack_arguments.hpp"
 #include "pack_report.hpp"
+#include "pack_resolve.hpp"
 #include "pak/error.hpp"
 #include "pak/io/atomic_file.hpp"
 #include "pak/io/packing_drawing.hpp"
@@ -28,51 +29,18 @@
 namespace pak::cli {
 namespace {
 
-// "W,H" (input units) for --tile.
-Vec2 parseTileSize(const std::string& text) {
-  double w = 0.0, h = 0.0;
-  char extra = 0;
-  if (std::sscanf(text.c_str(), " %lf , %lf %c", &w, &h, &extra) != 2 || !(w > 0.0 && h > 0.0) || !std::isfinite(w) ||
-      !std::isfinite(h))
-    throw InputError("--tile", "expects W,H with two positive numbers, got \"" + text + "\"");
-  return {w, h};
-}
-
 std::string formatSeconds(double s) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.1f s", s);
   return buffer;
 }
 
-// The options as the run uses them. The config file may name the preset, so it is read first;
-// the preset then sets the strengths and stopping rule that neither the file nor a flag gives;
-// last, the options given as text are parsed.
-void resolveOptions(PackArguments& args, const CLI::App& command) {
-  const OptionTable<PackArguments>& table = packOptions();
-  std::set<std::string> configured;
-  if (!args.common.config.empty()) configured = table.applyConfig(args.common.config, command, args, &args.common.lengths);
-  if (args.rigid && !args.preset.empty() && args.preset != "rigid")
-    throw InputError("--rigid", "conflicts with --preset " + args.preset);
-  if (args.rigid) args.preset = "rigid";
-  if (!args.preset.empty()) {
-    PackArguments preset = args;
-    applyRepulsionPreset(args.preset, preset.options);
-    table.copyUnless(args, preset, [&](const Option<PackArguments>& o) {
-      return table.given(command, o) || configured.count(o.name) > 0;
-    });
-  }
-  // A field given alone asks for the field.
-  if (command.count("--orientation-field") > 0 && command.count("--orientation") == 0 && args.orientation == "random")
-    args.orientation = "field";
-  args.options.orientation.mode = parseOrientationMode(args.orientation);
-  args.options.orientation.field = parseOrientationField(args.orientationField);
-  if (!args.tile.empty()) args.options.tiling.size = parseTileSize(args.tile);
-}
-
 int runPack(PackArguments& args, const CLI::App& command) {
   using Clock = std::chrono::steady_clock;
   auto start = Clock::now();
-  resolveOptions(args, command);
+  nlohmann::json config;
+  if (!args.common.config.empty()) config = readConfigObject(args.common.config);
+  resolvePackOptions(args, command, args.common.config.empty() ? nullptr : &config, args.common.config);
   const CommonArguments& common = args.common;
   const bool tiled = isTiled(args.options.tiling.size);
   if (tiled && !args.container.empty()) throw InputError("--tile", "packs its own rectangle; give no --container");

@@ -162,8 +162,14 @@ class OptionTable {
   // and an alias) and values of the wrong type are InputErrors naming the file.
   std::set<std::string> applyConfig(const std::string& file, const CLI::App& command, Root& root,
                                     GivenLengths* lengths = nullptr) const {
+    return applyConfigObject(readConfigObject(file), file, command, root, lengths);
+  }
+
+  // As applyConfig, from a JSON object already read (the Python module's keyword arguments);
+  // errors name `file`, where the object came from.
+  std::set<std::string> applyConfigObject(const nlohmann::json& json, const std::string& file, const CLI::App& command,
+                                          Root& root, GivenLengths* lengths = nullptr) const {
     std::map<std::string, std::string> keyOf;  // option name → the key that set it
-    const nlohmann::json json = readConfigObject(file);
     for (const auto& [key, value] : json.items()) {
       const Option<Root>* o = find(key);
       if (!o) throw InputError(file, "unknown option \"" + key + "\"");
