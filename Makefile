@@ -3,7 +3,7 @@ JOBS ?= $(shell nproc)
 RELEASE_DIR := build/release
 TEST_DIR := build/test
 
-.PHONY: all deps release demo test bench install install-inkscape clean
+.PHONY: all deps release python demo test bench install install-inkscape clean
 PREFIX ?= /usr/local
 
 all: release
@@ -15,6 +15,10 @@ release: deps
 	@cmake -S . -B $(RELEASE_DIR) -DCMAKE_BUILD_TYPE=Release -DPAK_BUILD_TESTS=OFF > /dev/null
 	@cmake --build $(RELEASE_DIR) -j $(JOBS)
 
+# The `pak` Python module, in the release build: build/release/python/pak.*.so
+# (PYTHONPATH=build/release/python /usr/bin/python3 -c 'import pak').
+python: release
+
 # Packs the bundled example scene: out/demo.svg and out/demo.png.
 demo: release
 	@mkdir -p out
@@ -22,16 +26,23 @@ demo: release
 	  -o out/demo.svg --png out/demo.png --report out/demo-report.json
 	@echo "demo: wrote out/demo.svg, out/demo.png and out/demo-report.json"
 
-# Assertions on, AddressSanitizer + UndefinedBehaviorSanitizer, then every test.
-test: deps
+# Assertions on, AddressSanitizer + UndefinedBehaviorSanitizer, then every test. python3
+# cannot load a sanitized module, so the Python tests run on the release build's module.
+test: deps python
 	@cmake -S . -B $(TEST_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPAK_SANITIZE=ON \
-	  -DPAK_ASSERTIONS=ON -DPAK_BUILD_BENCH=OFF > /dev/null
+	  -DPAK_ASSERTIONS=ON -DPAK_BUILD_BENCH=OFF -DPAK_PYTHON_TEST_BUILD=$(abspath $(RELEASE_DIR)) > /dev/null
 	@cmake --build $(TEST_DIR) -j $(JOBS)
 	@cd $(TEST_DIR) && ASAN_OPTIONS=detect_leaks=1 ctest --output-on-failure -j $(JOBS)
 
 # pak, its man pages and bash completion under PREFIX (bin/, share/man/man1/,
-# share/bash-completion/completions/): `make install PREFIX=$$HOME/.local` needs no root.
+# share/bash-completion/completions/), and the Python module into python3's site-packages
+# for PREFIX (/usr/local: its dist-packages; ~/.local: the user site; PYTHON_SITE=DIR: there):
+# `make install PREFIX=$$HOME/.local` needs no root.
+PYTHON_SITE ?= $(shell /usr/bin/python3 -c "import sys, sysconfig; p = sys.argv[1]; \
+  print(sysconfig.get_path('platlib') if p == '/usr/local' else \
+  sysconfig.get_path('platlib', 'posix_prefix', vars={'platbase': p, 'base': p}))" $(PREFIX) 2> /dev/null)
 install: release
+	@$(if $(PYTHON_SITE),cmake -S . -B $(RELEASE_DIR) -DPAK_PYTHON_INSTALL_DIR=$(PYTHON_SITE) > /dev/null)
 	@cmake --install $(RELEASE_DIR) --prefix $(PREFIX)
 
 # The Inkscape extension (Extensions > Pak > Pack and Flow) into the user's extensions folder,

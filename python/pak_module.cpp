@@ -1,0 +1,81 @@
+// The `pak` Python module: the library's packers on scenes and elements read from files or
+// made from numpy arrays (docs/python.md).
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "pak/error.hpp"
+#include "py_inputs.hpp"
+#include "py_pack.hpp"
+#include "py_result.hpp"
+
+namespace py = pybind11;
+using namespace pak::python;
+
+namespace {
+
+// A path or a list of them.
+std::vector<std::string> pathList(const py::object& paths) {
+  const py::module_ os = py::module_::import("os");
+  if (py::isinstance<py::str>(paths) || py::hasattr(paths, "__fspath__"))
+    return {py::cast<std::string>(os.attr("fspath")(paths))};
+  std::vector<std::string> list;
+  for (const py::handle p : paths) list.push_back(py::cast<std::string>(os.attr("fspath")(p)));
+  return list;
+}
+
+}  // namespace
+
+PYBIND11_MODULE(pak, m) {
+  m.doc() = "Pak: packs deformable elements into containers (RepulsionPak; docs/python.md).";
+  m.attr("__version__") = PAK_VERSION;
+  // What the CLI prints after "pak: error: ", as the exception's message.
+  py::register_exception<pak::InputError>(m, "InputError", PyExc_ValueError);
+
+  py::class_<SceneInput>(m, "Scene", "A container (and the scene around it), as `pak pack --container` reads it.")
+      .def_property_readonly("file", [](const SceneInput& s) { return s.file; })
+      .def_property_readonly("container", [](const SceneInput& s) { return ringArrays(s.loaded.scene.container); },
+                             "the container's rings (outer rings and holes) as (N, 2) arrays")
+      .def("__repr__", [](const SceneInput& s) {
+        return "<pak.Scene " + (s.file.empty() ? std::string("from rings") : s.file) + ">";
+      });
+  py::class_<ElementsInput>(m, "Elements", "Elements, as `pak pack --elements` reads them.")
+      .def("__len__", [](const ElementsInput& e) { return e.elements.size(); })
+      .def_property_readonly("sources",
+                             [](const ElementsInput& e) {
+                               std::vector<std::string> sources;
+                               for (const auto& l : e.elements) sources.push_back(l.element.source);
+                               return sources;
+                             })
+      .def("__repr__", [](const ElementsInput& e) { return "<pak.Elements: " + std::to_string(e.elements.size()) + ">"; });
+  bindPackResult(m);
+
+  m.def(
+      "read_scene",
+      [](const py::object& path, const std::string& containerLayer) {
+        return readScene(pathList(path).at(0), containerLayer);
+      },
+      py::arg("path"), py::arg("container_layer") = "container",
+        "Reads a scene (.svg or .path), as `pak pack --container PATH` does.");
+  m.def(
+      "read_elements", [](const py::object& paths) { return readElements(pathList(paths)); }, py::arg("paths"),
+      "Reads element files and folders, as `pak pack --elements PATHS...` does.");
+  m.def(
+      "scene", [](const py::object& rings) { return sceneFromRings(rings); }, py::arg("rings"),
+      "A container from an (N, 2) array or a list of them (holes by the even-odd rule), SVG coordinates (y down).");
+  m.def(
+      "elements",
+      [](const py::object& items, const std::vector<std::string>& colors) { return elementsFromRings(items, colors); },
+      py::arg("items"), py::arg("colors") = std::vector<std::string>{},
+      "Elements, one per item: an (N, 2) array or a list of rings (even-odd), each filled with colors[i].");
+  m.def("pack", &pack, py::arg("container") = py::none(), py::arg("elements") = py::none(), py::kw_only(),
+        py::arg("secondary") = py::none(), py::arg("progress") = py::none(), py::arg("progress_every") = 50,
+        R"(Packs `elements` into `container` (RepulsionPak), as `pak pack` does.
+
+container: a path, a pak.Scene, or rings (an (N, 2) array or a list of them); None with tile="W,H".
+elements: a path or list of paths (files, folders), a pak.Elements, or a list of elements as rings.
+options: `pak pack`'s options by the same names, '-' written '_' (seed=3, max_iterations=500,
+threads=2, gap="2mm", preset="rigid"), read as a --config file is.
+progress: called with a dict (iteration, fill, growing, ...) every progress_every iterations;
+an exception it raises stops the run and propagates.
+Raises pak.InputError with the message `pak pack` prints.)");
+}

@@ -1,0 +1,21 @@
+#pragma once
+// Rings between numpy and the core: (N, 2) float64 arrays of x, y in the SVG's coordinates
+// (y down), the closing vertex not repeated.
+#include <vector>
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include "pak/geom/polygon.hpp"
+
+namespace pak::python {
+
+namespace py = pybind11;
+
+// Anything numpy reads as an (N, 2) array of numbers, N >= 3; else an InputError naming `where`.
+Ring ringFromArray(const py::handle& points, const std::string& where);
+// One ring (an (N, 2) array) or a sequence of rings.
+std::vector<Ring> ringsFromObject(const py::handle& object, const std::string& where);
+py::array_t<double> arrayFromRing(const Ring& ring);
+
+}  // namespace pak::python

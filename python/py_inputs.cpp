@@ -1,0 +1,108 @@
+#include "py_inputs.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <limits>
+
+#include <pybind11/stl.h>
+
+#include "pak/error.hpp"
+#include "pak/io/svg_reader.hpp"
+#include "py_arrays.hpp"
+
+namespace pak::python {
+namespace {
+
+std::string number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.17g", value);  // round-trips exactly
+  return text;
+}
+
+// `rings` as one even-odd <path>'s d.
+std::string pathData(const std::vector<Ring>& rings) {
+  std::string d;
+  for (const Ring& ring : rings) {
+    for (std::size_t i = 0; i < ring.size(); ++i)
+      d += (i == 0 ? "M" : " L") + number(ring[i].x) + "," + number(ring[i].y);
+    d += " Z ";
+  }
+  return d;
+}
+
+// A document of one path per item, its viewBox the items' bounds.
+SvgDocument documentOf(const std::vector<std::vector<Ring>>& items, const std::vector<std::string>& fills,
+                       const std::string& name) {
+  double x0 = std::numeric_limits<double>::infinity(), y0 = x0, x1 = -x0, y1 = -x0;
+  for (const auto& rings : items)
+    for (const Ring& ring : rings)
+      for (const Vec2& p : ring) {
+        x0 = std::min(x0, p.x), y0 = std::min(y0, p.y);
+        x1 = std::max(x1, p.x), y1 = std::max(y1, p.y);
+      }
+  const std::string w = number(std::max(x1 - x0, 1e-9)), h = number(std::max(y1 - y0, 1e-9));
+  std::string svg = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + w + "\" height=\"" + h + "\" viewBox=\"" +
+                    number(x0) + " " + number(y0) + " " + w + " " + h + "\">\n";
+  for (std::size_t i = 0; i < items.size(); ++i)
+    svg += "<path fill-rule=\"evenodd\" fill=\"" + fills[i] + "\" d=\"" + pathData(items[i]) + "\"/>\n";
+  return readSvgString(svg + "</svg>\n", name);
+}
+
+bool isPath(const py::handle& object) {
+  return py::isinstance<py::str>(object) || py::hasattr(object, "__fspath__");
+}
+
+std::string pathText(const py::handle& object) {
+  return py::cast<std::string>(py::module_::import("os").attr("fspath")(object));
+}
+
+}  // namespace
+
+SceneInput readScene(const std::string& path, const std::string& containerLayer) {
+  SceneOptions options;
+  options.containerLayer = containerLayer;
+  return {loadScene(path, options), path};
+}
+
+ElementsInput readElements(const std::vector<std::string>& paths) { return {loadElements(paths), paths}; }
+
+SceneInput sceneFromRings(const py::handle& rings) {
+  const std::vector<Ring> container = ringsFromObject(rings, "container");
+  return {sceneFromDocument(documentOf({container}, {"#000000"}, "container")), ""};
+}
+
+ElementsInput elementsFromRings(const py::handle& items, const std::vector<std::string>& colors) {
+  ElementsInput input;
+  std::size_t i = 0;
+  for (const py::handle item : items) {
+    const std::string name = "element " + std::to_string(i);
+    const std::string fill = i < colors.size() ? colors[i] : "#3b6ea5";
+    input.elements.push_back(elementFromDocument(documentOf({ringsFromObject(item, name)}, {fill}, name)));
+    ++i;
+  }
+  if (input.elements.empty()) throw InputError("elements", "no element given");
+  return input;
+}
+
+SceneInput sceneArgument(const py::handle& container, const std::string& containerLayer) {
+  if (py::isinstance<SceneInput>(container)) return py::cast<SceneInput>(container);
+  if (isPath(container)) return readScene(pathText(container), containerLayer);
+  return sceneFromRings(container);
+}
+
+ElementsInput elementsArgument(const py::handle& elements) {
+  if (py::isinstance<ElementsInput>(elements)) return py::cast<ElementsInput>(elements);
+  if (isPath(elements)) return readElements({pathText(elements)});
+  if (py::isinstance<py::sequence>(elements) && py::len(elements) > 0) {
+    bool paths = true;
+    for (const py::handle item : elements) paths = paths && isPath(item);
+    if (paths) {
+      std::vector<std::string> files;
+      for (const py::handle item : elements) files.push_back(pathText(item));
+      return readElements(files);
+    }
+  }
+  return elementsFromRings(elements);
+}
+
+}  // namespace pak::python

@@ -1,0 +1,101 @@
+#include "py_result.hpp"
+
+#include <cstdio>
+#include <fstream>
+
+#include "pak/error.hpp"
+#include "pak/io/atomic_file.hpp"
+#include "pak/io/png_renderer.hpp"
+#include "py_arrays.hpp"
+
+namespace pak::python {
+namespace {
+
+// "#rrggbb" of what the element paints first (its first fill, else stroke); None if nothing.
+py::object colorOf(const PlacedElement& element) {
+  for (const Shape& shape : element.art)
+    if (const std::optional<Color>& c = shape.fill ? shape.fill : shape.stroke) {
+      char text[8];
+      std::snprintf(text, sizeof text, "#%02x%02x%02x", c->r, c->g, c->b);
+      return py::str(text);
+    }
+  return py::none();
+}
+
+py::bytes png(const PackResult& result, int width) {
+  PngOptions options;
+  options.width = width;
+  std::string bytes;
+  {
+    py::gil_scoped_release release;
+    bytes = renderPng(result.drawing, options, "to_png");
+  }
+  return py::bytes(bytes);
+}
+
+}  // namespace
+
+py::list ringArrays(const Region& region) {
+  py::list rings;
+  for (const Polygon& polygon : region) {
+    rings.append(arrayFromRing(polygon.outer));
+    for (const Ring& hole : polygon.holes) rings.append(arrayFromRing(hole));
+  }
+  return rings;
+}
+
+void bindPackResult(py::module_& m) {
+  py::class_<PackResult>(m, "PackResult", "A packing: pak.pack's result.")
+      .def_property_readonly(
+          "outlines",
+          [](const PackResult& r) {
+            py::list all;
+            for (const Region& outline : artOutlines(r.packing)) all.append(ringArrays(outline));
+            return all;
+          },
+          "each placed element's outline (what its art paints) as a list of (N, 2) arrays: outer rings and holes")
+      .def_property_readonly(
+          "skins",
+          [](const PackResult& r) {
+            py::list all;
+            for (const PlacedElement& e : r.packing.elements) all.append(arrayFromRing(e.skin));
+            return all;
+          },
+          "each placed element's deformed skin, an (N, 2) array")
+      .def_property_readonly(
+          "colors",
+          [](const PackResult& r) {
+            py::list all;
+            for (const PlacedElement& e : r.packing.elements) all.append(colorOf(e));
+            return all;
+          },
+          "each placed element's colour, '#rrggbb' (its first fill, else stroke), or None")
+      .def_property_readonly(
+          "sources",
+          [](const PackResult& r) {
+            py::list all;
+            for (const PlacedElement& e : r.packing.elements) all.append(py::str(e.source));
+            return all;
+          },
+          "the file (or name) each placed element came from")
+      .def_property_readonly(
+          "report",
+          [](const PackResult& r) { return py::module_::import("json").attr("loads")(r.report.dump()); },
+          "the report `pak pack --report` writes, as a dict")
+      .def("__len__", [](const PackResult& r) { return r.packing.elements.size(); })
+      .def("to_svg", [](const PackResult& r) { return r.svg; }, "the SVG `pak pack -o` writes")
+      .def(
+          "save",
+          [](const PackResult& r, const py::object& path) {
+            writeFileAtomically(py::cast<std::string>(py::module_::import("os").attr("fspath")(path)), r.svg);
+          },
+          py::arg("path"), "writes to_svg() to `path`")
+      .def("to_png", &png, py::arg("width") = 1200, "the PNG `pak pack --png` writes, as bytes")
+      .def("_repr_png_", [](const PackResult& r) { return png(r, 800); })
+      .def("__repr__", [](const PackResult& r) {
+        return "<pak.PackResult: " + std::to_string(r.packing.elements.size()) + " elements, " +
+               std::to_string(r.packing.iterations) + " iterations, " + toString(r.packing.stopReason) + ">";
+      });
+}
+
+}  // namespace pak::python
