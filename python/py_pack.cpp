@@ -53,25 +53,27 @@ PackResult pack(const py::object& container, const py::object& elements, const p
   args.elements = primaries.paths;
   args.secondary = secondaries.paths;
 
-  // The callback runs on the packer's thread, which holds no GIL; its exception stops the run.
+  // The callback runs on the packer's thread, which holds no GIL. It also lets Python handle
+  // its signals, so that Ctrl-C (KeyboardInterrupt) stops a run; either's exception stops the
+  // run as a time limit would, and is raised once it has.
   std::atomic<bool> stop{false};
   std::optional<py::error_already_set> raised;
   RepulsionCallbacks callbacks;
-  if (!progress.is_none()) {
-    callbacks.progressEvery = std::max(1, progressEvery);
-    callbacks.onProgress = [&](const RepulsionProgress& p) {
-      py::gil_scoped_acquire gil;
-      if (raised) return;
-      try {
+  callbacks.progressEvery = std::max(1, progressEvery);
+  callbacks.onProgress = [&](const RepulsionProgress& p) {
+    py::gil_scoped_acquire gil;
+    if (raised) return;
+    try {
+      if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+      if (!progress.is_none())
         progress(py::dict("iteration"_a = p.iteration, "fill"_a = p.fill, "growing"_a = p.growing,
                           "elements"_a = p.elements, "touching_neighbours"_a = p.touchingNeighbours,
                           "against_wall"_a = p.againstWall));
-      } catch (py::error_already_set& e) {
-        raised = std::move(e);
-        stop = true;
-      }
-    };
-  }
+    } catch (py::error_already_set& e) {
+      raised = std::move(e);
+      stop = true;
+    }
+  };
   args.options.run.stopRequest = &stop;
 
   PackResult result;

@@ -90,3 +90,22 @@ def test_progress_is_called_and_its_exception_stops_the_run(source):
 
     with pytest.raises(KeyError):
         pak.pack(circle(100.0), elements(source), progress=stop, **OPTIONS)
+
+
+def test_ctrl_c_stops_a_run_with_keyboard_interrupt(source):
+    import os
+    import signal
+    import threading
+    import time
+
+    timer = threading.Timer(0.5, lambda: os.kill(os.getpid(), signal.SIGINT))
+    start = time.monotonic()
+    timer.start()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            # A run that would go on for the whole time limit.
+            pak.pack(circle(100.0), elements(source), seed=1, max_iterations=10**7, time_limit=20.0,
+                     stall_epsilon=0.0, target_fill=0.999, progress_every=5)
+    finally:
+        timer.cancel()
+    assert time.monotonic() - start < 15.0
