@@ -20,11 +20,17 @@ def circle(radius, n=48, centre=(0.0, 0.0)):
     return np.column_stack([centre[0] + radius * np.cos(t), centre[1] + radius * np.sin(t)])
 
 
-def test_the_svg_is_the_one_the_cli_writes(source, pak_binary, tmp_path):
+# Plain options; then a preset, a length with a unit, a text option and a flag.
+@pytest.mark.parametrize("more, more_flags", [
+    ({}, []),
+    (dict(preset="rigid", gap="1.5mm", orientation="upright", polyline=True),
+     ["--preset", "rigid", "--gap", "1.5mm", "--orientation", "upright", "--polyline"]),
+])
+def test_the_svg_is_the_one_the_cli_writes(source, pak_binary, tmp_path, more, more_flags):
     cli = tmp_path / "cli.svg"
     subprocess.run([pak_binary, "pack", "-q", "--container", str(source / "examples/scene.svg"),
-                    "--elements", *elements(source), *FLAGS, "-o", str(cli)], check=True)
-    result = pak.pack(str(source / "examples/scene.svg"), elements(source), **OPTIONS)
+                    "--elements", *elements(source), *FLAGS, *more_flags, "-o", str(cli)], check=True)
+    result = pak.pack(str(source / "examples/scene.svg"), elements(source), **OPTIONS, **more)
     assert result.to_svg() == cli.read_text()
     result.save(tmp_path / "module.svg")
     assert (tmp_path / "module.svg").read_bytes() == cli.read_bytes()
