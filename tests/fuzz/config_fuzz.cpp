@@ -38,31 +38,48 @@ class ConfigFile {
   std::string path_;
 };
 
-// The table's keys from `file` into fresh arguments, as the command does before its run.
+// A command's arguments and its options bound to them, made once: building the CLI11 options
+// anew for every input would take most of the fuzzer's time.
 template <class Arguments>
-Arguments configured(const OptionTable<Arguments>& table, const std::string& file) {
+struct Command {
+  explicit Command(const OptionTable<Arguments>& table) : table(table) {
+    table.addTo(command, args, &args.common.lengths);
+  }
+  const OptionTable<Arguments>& table;
   Arguments args;
   CLI::App command;
-  table.addTo(command, args, &args.common.lengths);
-  table.applyConfig(file, command, args, &args.common.lengths);
-  table.resolveLengths(args, args.common.lengths, LengthScale{});
-  return args;
+};
+
+// The table's keys from `file` into fresh arguments, as the command does before its run (no
+// flag given: the file sets everything it names).
+template <class Arguments>
+const Arguments& configured(Command<Arguments>& command, const std::string& file) {
+  command.args = Arguments{};  // the defaults, in place: the options stay bound to them
+  command.table.applyConfig(file, command.command, command.args, &command.args.common.lengths);
+  command.table.resolveLengths(command.args, command.args.common.lengths, LengthScale{});
+  return command.args;
 }
 
 void readAsPack(const std::string& file) {
-  PackArguments args = configured(packOptions(), file);
-  if (!args.preset.empty()) pak::applyRepulsionPreset(args.preset, args.options);
+  static Command<PackArguments> pack(packOptions());
+  const PackArguments& args = configured(pack, file);
+  if (!args.preset.empty()) {
+    pak::RepulsionOptions preset = args.options;
+    pak::applyRepulsionPreset(args.preset, preset);
+  }
   pak::parseOrientationMode(args.orientation);
   pak::parseOrientationField(args.orientationField);
 }
 
 void readAsFlow(const std::string& file) {
-  const FlowArguments args = configured(flowOptions(), file);
+  static Command<FlowArguments> flow(flowOptions());
+  const FlowArguments& args = configured(flow, file);
   if (!args.mirror.empty()) parseMirror(args.mirror);
 }
 
 void readAsAnimate(const std::string& file) {
-  const AnimateArguments args = configured(animateOptions(), file);
+  static Command<AnimateArguments> animate(animateOptions());
+  const AnimateArguments& args = configured(animate, file);
   if (!args.mirror.empty()) parseMirror(args.mirror);
 }
 
