@@ -45,15 +45,15 @@ for target in "$@"; do
   # libFuzzer's closing lines: runs, coverage, corpus, speed.
   grep -E '^#[0-9]+:?[[:space:]].*(cov|DONE)' "$log" | tail -n 1 | sed 's/^/  /'
   grep -E '^Done [0-9]+ runs|^stat::number_of_executed_units|^stat::average_exec_per_sec|^stat::peak_rss_mb' "$log" | sed 's/^/  /'
-  new_findings=$(find "$findings" -type f -newer "$started" ! -name minimised | sort)
+  new_findings=$(find "$findings" -type f -newer "$started" ! -name '*.min' | sort)
   if [ "$status" -ne 0 ] || [ -n "$new_findings" ]; then
     found=1
     grep -m 1 -E 'ERROR: |fuzz: finding|SUMMARY: ' "$log" | sed 's/^/  /'
     echo "fuzz: $target: FINDING (exit $status): ${new_findings:-see $log}"
     for artifact in $new_findings; do
-      echo "  minimise: $program -minimize_crash=1 -runs=20000 -exact_artifact_path=$findings/minimised $artifact"
+      echo "  minimise: $program -minimize_crash=1 -runs=20000 -exact_artifact_path=$artifact.min $artifact"
     done
-    echo "  then keep it: cp $findings/minimised tests/fuzz/regressions/$target/<what-it-is> (once fixed)"
+    echo "  once fixed, keep it: cp FILE.min tests/fuzz/regressions/$target/<what-it-is>"
   fi
 done
 if [ "$found" -ne 0 ]; then
