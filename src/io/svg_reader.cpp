@@ -1443,7 +1443,10 @@ void expandUses(rapidxml_ns::xml_document<char>& xml, XmlNode* root, ReaderState
   std::size_t copies = 0;
   bool overBudget = false;
   for (std::size_t next = 0; next < pending.size(); ++next) {
-    auto [use, depth] = pending[next];
+    // Plain variables, not a structured binding: the lambdas below capture them (clang 14,
+    // which builds the fuzz targets, cannot capture a binding).
+    XmlNode* const use = pending[next].first;
+    const int depth = pending[next].second;
     const std::string id = attributeOf(use, "id");
     const std::string where = state.placeOf(use, "<use" + (id.empty() ? std::string() : " id=\"" + id + "\"") + ">");
     auto drop = [&](const std::string& why) {
