@@ -15,6 +15,9 @@ namespace cl = ClipperLib;
 
 // Clipper's exact arithmetic covers |coordinate| < 2^62; stay well inside it.
 constexpr double kMaxScaledCoordinate = 1e18;
+// An offset's arcs have about π / sqrt(2 · tolerance / delta) points a turn; a tolerance
+// below this share of the offset distance (2,200 points a turn) only costs memory.
+constexpr double kMinArcToleranceShare = 1e-6;
 
 double scaleFor(double precision) {
   if (!(precision > 0.0) || !std::isfinite(precision))
@@ -86,19 +89,42 @@ cl::PolyFillType toClipper(FillRule rule) {
   return rule == FillRule::EvenOdd ? cl::pftEvenOdd : cl::pftNonZero;
 }
 
+// Clipper reports what it cannot represent by throwing its own exception; it is the input's
+// fault (a coordinate or an offset too large), so it becomes an InputError the caller places.
+template <class Run>
+void clipperGuarded(const Run& run) {
+  try {
+    run();
+  } catch (const cl::clipperException& e) {
+    throw InputError("", std::string("geometry too large to clip (") + e.what() + ")");
+  }
+}
+
 Region runBoolean(cl::ClipType type, const cl::Paths& subject, const cl::Paths& clip, double scale) {
   cl::Clipper clipper;
-  clipper.AddPaths(subject, cl::ptSubject, true);
-  clipper.AddPaths(clip, cl::ptClip, true);
   cl::PolyTree tree;
-  clipper.Execute(type, tree, cl::pftNonZero, cl::pftNonZero);
+  clipperGuarded([&] {
+    clipper.AddPaths(subject, cl::ptSubject, true);
+    clipper.AddPaths(clip, cl::ptClip, true);
+    clipper.Execute(type, tree, cl::pftNonZero, cl::pftNonZero);
+  });
   return toRegion(tree, scale);
 }
 
+// The offset's result reaches |delta| beyond its input: it must stay in Clipper's range too.
 Region runOffset(cl::ClipperOffset& offsetter, double delta, double scale) {
+  if (!(std::abs(delta * scale) <= kMaxScaledCoordinate))
+    throw InputError("", "offset distance " + messageNumber(delta) + " is too large for clipping precision " +
+                             messageNumber(1.0 / scale));
   cl::PolyTree tree;
-  offsetter.Execute(tree, delta * scale);
+  clipperGuarded([&] { offsetter.Execute(tree, delta * scale); });
   return toRegion(tree, scale);
+}
+
+// The arc tolerance an offset by `delta` uses: the asked one, but never so fine that the arcs
+// take millions of points (the budget on Clipper's work for offsets).
+double arcToleranceFor(double delta, const OffsetOptions& options) {
+  return std::max(options.arcTolerance, std::abs(delta) * kMinArcToleranceShare);
 }
 
 void checkOffsetOptions(double delta, const OffsetOptions& options) {
@@ -120,9 +146,11 @@ Region regionFromRings(const std::vector<Ring>& rings, FillRule rule, const Clip
     paths.push_back(std::move(path));
   }
   cl::Clipper clipper;
-  clipper.AddPaths(paths, cl::ptSubject, true);
   cl::PolyTree tree;
-  clipper.Execute(cl::ctUnion, tree, toClipper(rule), toClipper(rule));
+  clipperGuarded([&] {
+    clipper.AddPaths(paths, cl::ptSubject, true);
+    clipper.Execute(cl::ctUnion, tree, toClipper(rule), toClipper(rule));
+  });
   return toRegion(tree, scale);
 }
 
@@ -154,7 +182,7 @@ Region intersect(const Region& a, const Region& b, const ClipOptions& options) {
 Region offset(const Region& region, double delta, const OffsetOptions& options) {
   checkOffsetOptions(delta, options);
   const double scale = scaleFor(options.precision);
-  cl::ClipperOffset offsetter(2.0, options.arcTolerance * scale);
+  cl::ClipperOffset offsetter(2.0, arcToleranceFor(delta, options) * scale);
   offsetter.AddPaths(toPaths(region, scale), cl::jtRound, cl::etClosedPolygon);
   return runOffset(offsetter, delta, scale);
 }
@@ -166,7 +194,7 @@ Region offsetPolyline(const Polyline& line, double delta, const OffsetOptions& o
   cl::Path path;
   path.reserve(line.size());
   for (Vec2 p : line) path.push_back(toInt(p, scale));
-  cl::ClipperOffset offsetter(2.0, options.arcTolerance * scale);
+  cl::ClipperOffset offsetter(2.0, arcToleranceFor(delta, options) * scale);
   offsetter.AddPath(path, cl::jtRound, cl::etOpenRound);
   return runOffset(offsetter, delta, scale);
 }
@@ -200,7 +228,7 @@ Region strokeOutline(const Polyline& line, bool closed, double delta, const Stro
       return {square};
     }
     // Round: Clipper turns a one-point path with a round join into a disc.
-    cl::ClipperOffset offsetter(2.0, options.arcTolerance * scale);
+    cl::ClipperOffset offsetter(2.0, arcToleranceFor(delta, options) * scale);
     offsetter.AddPath(path, cl::jtRound, cl::etOpenRound);
     return runOffset(offsetter, delta, scale);
   }
@@ -213,7 +241,7 @@ Region strokeOutline(const Polyline& line, bool closed, double delta, const Stro
   cl::EndType end = cl::etClosedLine;
   if (!closed || path.size() < 3)
     end = style.cap == StrokeCap::Butt ? cl::etOpenButt : style.cap == StrokeCap::Square ? cl::etOpenSquare : cl::etOpenRound;
-  cl::ClipperOffset offsetter(std::max(1.0, style.miterLimit), options.arcTolerance * scale);
+  cl::ClipperOffset offsetter(std::max(1.0, style.miterLimit), arcToleranceFor(delta, options) * scale);
   offsetter.AddPath(path, join, end);
   return runOffset(offsetter, delta, scale);
 }
