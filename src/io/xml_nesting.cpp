@@ -34,12 +34,15 @@ void checkXmlNesting(std::string_view text, const std::string& file, int maxDept
     }
     if (rest.starts_with("</")) {
       depth = std::max(0, depth - 1);
-    } else if (!rest.starts_with("<!") && !(end < text.size() && text[end - 1] == '/')) {
-      if (++depth > maxDepth) {
+    } else if (!rest.starts_with("<!")) {
+      // An empty element (<rect/>) is as deep as one with children: counted the same way as
+      // the check after <use> expansion counts it, so both limits agree.
+      if (depth + 1 > maxDepth) {
         const auto line = std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(at), '\n') + 1;
         throw InputError(file + ":" + std::to_string(line),
                          "elements nested more than " + std::to_string(maxDepth) + " deep; flatten the groups");
       }
+      if (!(end < text.size() && text[end - 1] == '/')) ++depth;
     }
     at = end;
   }
