@@ -69,7 +69,8 @@ json shapeJson(const SvgShape& shape) {
     closed += subpath.closed ? 1 : 0;
     points += static_cast<int>(subpath.points.size());
   }
-  Region filled = shape.fill ? filledRegion(shape) : Region{};
+  // United once: the painted region reuses it.
+  const Region filled = shape.fill ? filledRegion(shape) : Region{};
   json out = {
       {"id", shape.id},
       {"tag", shape.tag},
@@ -85,7 +86,7 @@ json shapeJson(const SvgShape& shape) {
       {"points", points},
       {"filledArea", tidy(area(filled))},
       {"holes", holeCount(filled)},
-      {"paintedArea", tidy(area(paintedRegion(shape)))},
+      {"paintedArea", tidy(area(paintedRegion(shape, filled)))},
       {"bounds", boxJson(bounds(shape))},
   };
   if (shape.stroke)
