@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "pak/error.hpp"
+#include "pak/limits.hpp"
 
 namespace pak {
 namespace {
@@ -15,9 +16,6 @@ namespace cl = ClipperLib;
 
 // Clipper's exact arithmetic covers |coordinate| < 2^62; stay well inside it.
 constexpr double kMaxScaledCoordinate = 1e18;
-// An offset's arcs have about π / sqrt(2 · tolerance / delta) points a turn; a tolerance
-// below this share of the offset distance (2,200 points a turn) only costs memory.
-constexpr double kMinArcToleranceShare = 1e-6;
 // Up to this many rings, regionFromRings is one Clipper union (results as they always were);
 // beyond, it splits them into runs apart in x first (see there).
 constexpr std::size_t kRingsUnitedAtOnce = 4096;
@@ -127,7 +125,7 @@ Region runOffset(cl::ClipperOffset& offsetter, double delta, double scale) {
 // The arc tolerance an offset by `delta` uses: the asked one, but never so fine that the arcs
 // take millions of points (the budget on Clipper's work for offsets).
 double arcToleranceFor(double delta, const OffsetOptions& options) {
-  return std::max(options.arcTolerance, std::abs(delta) * kMinArcToleranceShare);
+  return std::max(options.arcTolerance, std::abs(delta) * limits::kMinArcToleranceShare);
 }
 
 void checkOffsetOptions(double delta, const OffsetOptions& options) {
