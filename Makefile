@@ -2,8 +2,11 @@
 JOBS ?= $(shell nproc)
 RELEASE_DIR := build/release
 TEST_DIR := build/test
+FUZZ_DIR := build/fuzz
+FUZZ_SECONDS ?= 60
+FUZZ_TARGETS ?= svg_reader path_reader animation_script config packing_reader
 
-.PHONY: all deps release python demo test bench install install-inkscape clean
+.PHONY: all deps release python demo test fuzz bench install install-inkscape clean
 PREFIX ?= /usr/local
 
 all: release
@@ -33,6 +36,15 @@ test: deps python
 	  -DPAK_ASSERTIONS=ON -DPAK_BUILD_BENCH=OFF -DPAK_PYTHON_TEST_BUILD=$(abspath $(RELEASE_DIR)) > /dev/null
 	@cmake --build $(TEST_DIR) -j $(JOBS)
 	@cd $(TEST_DIR) && ASAN_OPTIONS=detect_leaks=1 ctest --output-on-failure -j $(JOBS)
+
+# The readers' libFuzzer targets (clang, ASan+UBSan, in $(FUZZ_DIR)), each run FUZZ_SECONDS
+# (docs/reliability.md#fuzzing). Findings land in $(FUZZ_DIR)/findings/TARGET/ and fail the run.
+fuzz:
+	@./scripts/install-deps.sh --fuzz
+	@cmake -S . -B $(FUZZ_DIR) -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPAK_FUZZ=ON \
+	  -DPAK_SANITIZE=ON -DPAK_ASSERTIONS=ON -DPAK_BUILD_TESTS=OFF -DPAK_BUILD_APP=OFF -DPAK_BUILD_BENCH=OFF > /dev/null
+	@cmake --build $(FUZZ_DIR) -j $(JOBS) --target $(addprefix fuzz_,$(FUZZ_TARGETS))
+	@./scripts/run-fuzzers.sh $(FUZZ_DIR) $(FUZZ_SECONDS) $(FUZZ_TARGETS)
 
 # pak, its man pages and bash completion under PREFIX (bin/, share/man/man1/,
 # share/bash-completion/completions/), and the Python module into python3's site-packages

@@ -24,6 +24,12 @@ packages=(
   python3-pytest        # its tests (tests/python, run by make test)
 )
 
+# `make fuzz` (--fuzz): Debian's clang and its libFuzzer runtime; `make test` replays the
+# fuzz corpus with g++ and needs neither.
+fuzz_packages=(
+  clang libclang-rt-dev
+)
+
 docs_packages=(
   xvfb                  # a headless X server for a real Inkscape window
   imagemagick           # `import` grabs that window as a PNG
@@ -33,7 +39,8 @@ docs_packages=(
 for arg in "$@"; do
   case "$arg" in
     --docs) packages+=("${docs_packages[@]}") ;;
-    *) echo "install-deps: unknown option '$arg' (known: --docs)" >&2; exit 2 ;;
+    --fuzz) packages+=("${fuzz_packages[@]}") ;;
+    *) echo "install-deps: unknown option '$arg' (known: --docs, --fuzz)" >&2; exit 2 ;;
   esac
 done
 

@@ -16,6 +16,7 @@
 #include "output_files.hpp"
 #include "run_eta.hpp"
 #include "pak/error.hpp"
+#include "pak/io/output_batch.hpp"
 #include "pak/io/animation_checkpoint.hpp"
 #include "pak/io/animation_output.hpp"
 #include "pak/io/animation_script_reader.hpp"
@@ -83,15 +84,18 @@ int runAnimate(AnimateArguments& args, const CLI::App& command) {
     elements.push_back(std::move(one.front()));
   }
   const Library library = libraryOf(elements);
-  checkOutputsBeforeTheRun({{"--png", common.png}, {"--report", common.report}, {"--video", args.video}},
-                           inputFiles({args.container, args.animation, common.config, args.resume}, {&library}));
+  // Saving the checkpoint onto the one resumed from is how a long run goes on: not an overwrite.
+  const std::string resumedFrom = args.resume == args.checkpoint ? std::string() : args.resume;
+  checkOutputsBeforeTheRun({{"--png", common.png}, {"--report", common.report}, {"--video", args.video},
+                            {"--checkpoint", args.checkpoint}},
+                           inputFiles({args.container, args.animation, common.config, resumedFrom}, {&library}));
+  checkOutputFolder(common.output);
   if (!common.quiet) printInputWarnings(input.warnings, {&elements});
 
   const std::uint64_t fingerprint = runFingerprint(args, library);
   AnimationState resumed;
   if (!args.resume.empty()) resumed = readAnimationCheckpoint(args.resume, fingerprint);
 
-  createFolder(common.output);
   const std::filesystem::path out(common.output);
 
   AnimationCallbacks callbacks;
@@ -124,6 +128,8 @@ int runAnimate(AnimateArguments& args, const CLI::App& command) {
   const AnimatedPacking animation =
       packAnimation(scene, library, script, options, callbacks, args.resume.empty() ? nullptr : &resumed);
   const auto simulated = Clock::now();
+  OutputBatch outputs;  // every output, or none (and the output folder only if it was filled)
+  createFolder(common.output);
 
   auto frameTime = [&](int i, int count) {
     return script.loop ? static_cast<double>(i) / count : (count > 1 ? static_cast<double>(i) / (count - 1) : 0.0);
@@ -224,6 +230,7 @@ int runAnimate(AnimateArguments& args, const CLI::App& command) {
                  seconds.simulation, seconds.rendering, common.output.c_str());
   if (!common.report.empty())
     writeFileAtomically(common.report, animateReport(args, animation, frameCount, audit, seconds).dump(2) + "\n");
+  outputs.commit();
   return 0;
 }
 

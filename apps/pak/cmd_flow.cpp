@@ -13,6 +13,7 @@
 #include "outline_output.hpp"
 #include "output_files.hpp"
 #include "pak/error.hpp"
+#include "pak/io/output_batch.hpp"
 #include "pak/io/atomic_file.hpp"
 #include "pak/io/flow_drawing.hpp"
 #include "pak/io/scene_loader.hpp"
@@ -36,6 +37,7 @@ int runFlow(FlowArguments& args, const CLI::App& command) {
                                lengthScale(input.layout, canonicalFrameBox(scene, true)));
   const std::vector<LoadedElement> elements = loadElements(args.elements);
   const Library library = libraryOf(elements);
+  checkPngWidth(common.pngWidth);
   checkOutputsBeforeTheRun({{"-o", common.output}, {"--png", common.png}, {"--report", common.report}},
                            inputFiles({args.scene, common.config}, {&library}));
   if (!common.quiet) printInputWarnings(input.warnings, {&elements});
@@ -64,6 +66,7 @@ int runFlow(FlowArguments& args, const CLI::App& command) {
 
   args.options.run.stopRequest = &interruptRequest();
   FlowPacking packing = packFlow(scene, library, args.options, callbacks);
+  OutputBatch outputs;  // every output, or none
   FlowDrawingOptions drawingOptions;
   drawingOptions.debugLayers = common.debugLayers;
   Drawing drawing = flowDrawing(input.layout, packing, elements, drawingOptions);
@@ -84,6 +87,7 @@ int runFlow(FlowArguments& args, const CLI::App& command) {
                                                                          ? " (stopped by --time-limit)"
                                                                          : " (stopped by Ctrl-C)");
   if (!common.report.empty()) writeFileAtomically(common.report, flowReport(args, packing, check, paths, wall).dump(2) + "\n");
+  outputs.commit();
   return 0;
 }
 

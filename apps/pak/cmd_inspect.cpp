@@ -18,6 +18,7 @@
 #include "pak/error.hpp"
 #include "pak/geom/art.hpp"
 #include "pak/geom/scene.hpp"
+#include "pak/io/message_text.hpp"
 #include "pak/io/scene_loader.hpp"
 #include "pak/io/svg_reader.hpp"
 
@@ -68,7 +69,8 @@ json shapeJson(const SvgShape& shape) {
     closed += subpath.closed ? 1 : 0;
     points += static_cast<int>(subpath.points.size());
   }
-  Region filled = shape.fill ? filledRegion(shape) : Region{};
+  // United once: the painted region reuses it.
+  const Region filled = shape.fill ? filledRegion(shape) : Region{};
   json out = {
       {"id", shape.id},
       {"tag", shape.tag},
@@ -84,7 +86,7 @@ json shapeJson(const SvgShape& shape) {
       {"points", points},
       {"filledArea", tidy(area(filled))},
       {"holes", holeCount(filled)},
-      {"paintedArea", tidy(area(paintedRegion(shape)))},
+      {"paintedArea", tidy(area(paintedRegion(shape, filled)))},
       {"bounds", boxJson(bounds(shape))},
   };
   if (shape.stroke)
@@ -342,7 +344,7 @@ void printReport(std::ostream& out, const json& report) {
   out << "  warnings: " << (report["warnings"].empty() ? "none" : std::to_string(report["warnings"].size())) << "\n";
   for (const json& warning : report["warnings"]) {
     std::string where = warning["where"].get<std::string>();
-    out << "    " << (where.empty() ? "" : where + ": ") << warning["message"].get<std::string>() << "\n";
+    out << "    " << oneLine((where.empty() ? "" : where + ": ") + warning["message"].get<std::string>()) << "\n";
   }
 }
 
@@ -353,7 +355,9 @@ int runInspect(InspectOptions& options, const CLI::App&) {
   for (const std::string& file : options.files) reports.push_back(inspectFile(file));
   std::ostringstream out;
   if (options.json) {
-    out << json{{"files", reports}}.dump(2) << "\n";
+    // The reader makes names UTF-8 (U+FFFD for other bytes); `replace` keeps that promise for
+    // file names given on the command line too, where nlohmann would throw.
+    out << json{{"files", reports}}.dump(2, ' ', false, json::error_handler_t::replace) << "\n";
   } else {
     for (std::size_t i = 0; i < reports.size(); ++i) {
       if (i) out << "\n";

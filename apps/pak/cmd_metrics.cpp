@@ -18,6 +18,7 @@
 #include "command.hpp"
 #include "pak/error.hpp"
 #include "pak/geom/clipping.hpp"
+#include "pak/io/output_batch.hpp"
 #include "pak/io/atomic_file.hpp"
 #include "pak/io/distance_map_image.hpp"
 #include "pak/io/evenness_map_image.hpp"
@@ -280,6 +281,7 @@ int runMetrics(MetricsArgs& args, const CLI::App&) {
   std::vector<Measured> measured;
   for (const PackingGeometry& p : packings) measured.push_back({measurePacking(p, args.metrics), measureEvenness(p, evenness)});
 
+  OutputBatch batch;  // every output, or none
   if (!args.csv.empty()) writeFileAtomically(args.csv, csvText(measured));
   if (!args.json.empty()) {
     json list = json::array();
@@ -302,6 +304,7 @@ int runMetrics(MetricsArgs& args, const CLI::App&) {
     for (std::size_t i = 0; i < packings.size(); ++i)
       writeEvennessMapImage(packings[i], visualizationPath(args.evennessMap, i, packings.size()), evenness);
 
+  batch.commit();
   std::cout << tableText(measured, offsets, args.calibrate) << evennessTableText(measured) << std::flush;
   return 0;
 }

@@ -17,6 +17,7 @@
 #include "pack_resolve.hpp"
 #include "pak/error.hpp"
 #include "pak/io/atomic_file.hpp"
+#include "pak/io/output_batch.hpp"
 #include "pak/io/packing_drawing.hpp"
 #include "pak/io/png_renderer.hpp"
 #include "pak/io/scene_loader.hpp"
@@ -58,6 +59,7 @@ int runPack(PackArguments& args, const CLI::App& command) {
   const std::vector<LoadedElement> secondaryElements = args.secondary.empty() ? std::vector<LoadedElement>{} : loadElements(args.secondary);
   Library library = libraryOf(elements);
   Library secondaryLibrary = libraryOf(secondaryElements);
+  checkPngWidth(common.pngWidth);
   checkOutputsBeforeTheRun({{"-o", common.output}, {"--png", common.png}, {"--report", common.report}, {"--tile-preview", args.tilePreview}},
                            inputFiles({args.container, common.config}, {&library, &secondaryLibrary}));
   if (!common.quiet) printInputWarnings(input.warnings, {&elements, &secondaryElements});
@@ -91,6 +93,7 @@ int runPack(PackArguments& args, const CLI::App& command) {
   times.simulation = std::chrono::duration<double>(Clock::now() - simulationStart).count();
   if (!common.quiet && tty) std::fprintf(stderr, "\n");
 
+  OutputBatch outputs;  // every output, or none: a failed PNG leaves no SVG behind
   PackingDrawingOptions drawingOptions;
   drawingOptions.debugLayers = common.debugLayers;
   Drawing drawing = packingDrawing(input.layout, packing, drawingOptions);
@@ -115,6 +118,7 @@ int runPack(PackArguments& args, const CLI::App& command) {
                  formatSeconds(times.wall).c_str());
   if (!common.report.empty())
     writeFileAtomically(common.report, packReport(args, scene, packing, audit, times, paths).dump(2) + "\n");
+  outputs.commit();
   return 0;
 }
 

@@ -11,6 +11,7 @@
 #include "output_files.hpp"
 #include "pak/error.hpp"
 #include "pak/io/drawing.hpp"
+#include "pak/io/output_batch.hpp"
 #include "pak/io/png_renderer.hpp"
 #include "pak/io/scene_loader.hpp"
 #include "pak/io/svg_reader.hpp"
@@ -90,7 +91,7 @@ int runRender(RenderOptions& options, const CLI::App& command) {
   if (extension != ".png" && extension != ".svg")
     throw InputError(options.output, "unknown output format '" + extension + "' (use .png or .svg)");
   std::optional<Color> background = parseBackground(options.background);
-  if (options.width < 1) throw InputError("--width", "must be at least 1, got " + std::to_string(options.width));
+  checkPngWidth(options.width, "--width");
 
   SvgDocument document = readDocument(options.input);
   checkOutputsBeforeTheRun({{"-o", options.output}}, {options.input});
@@ -100,6 +101,7 @@ int runRender(RenderOptions& options, const CLI::App& command) {
     throw InputError(options.input, "no usable shape to draw" + reason);
   }
   Drawing drawing = drawingFromDocument(document);
+  OutputBatch outputs;
   if (extension == ".png") {
     writePngFile(drawing, options.output, PngOptions{.width = options.width, .background = background});
   } else {
@@ -113,6 +115,7 @@ int runRender(RenderOptions& options, const CLI::App& command) {
     if (background && backgroundGiven) addBackground(drawing, *background);
     writeSvgFile(drawing, options.output);
   }
+  outputs.commit();
   return 0;
 }
 

@@ -5,6 +5,8 @@
 #include <string>
 #include <utility>
 
+#include "pak/io/message_text.hpp"
+
 namespace pak::cli {
 
 void printInputWarnings(const std::vector<Warning>& sceneWarnings,
@@ -14,7 +16,7 @@ void printInputWarnings(const std::vector<Warning>& sceneWarnings,
   auto print = [&](const std::vector<Warning>& warnings) {
     for (const Warning& w : warnings)
       if (printed.emplace(w.where, w.message).second)
-        std::fprintf(stderr, "pak: warning: %s%s%s\n", w.where.c_str(), w.where.empty() ? "" : ": ", w.message.c_str());
+        std::fprintf(stderr, "pak: warning: %s\n", oneLine(w.where.empty() ? w.message : w.where + ": " + w.message).c_str());
   };
   print(sceneWarnings);
   for (const std::vector<LoadedElement>* list : elements)

@@ -2,12 +2,14 @@
 #include <algorithm>
 #include <cstdio>
 #include <exception>
+#include <new>
 #include <iostream>
 #include <string>
 #include <vector>
 
 #include "command.hpp"
 #include "pak/error.hpp"
+#include "pak/io/message_text.hpp"
 #include "usage_error.hpp"
 
 namespace pak::cli {
@@ -18,6 +20,13 @@ std::vector<Command>& commandRegistry() {
 }  // namespace pak::cli
 
 namespace {
+// Every message pak prints is one line (pak/io/message_text.hpp): whatever a file or an
+// argument holds, a newline in it is escaped and a long value cut.
+void printError(const std::string& where, const std::string& what) {
+  const std::string text = where.empty() ? what : where + ": " + what;
+  std::fprintf(stderr, "pak: error: %s\n", pak::oneLine(text).c_str());
+}
+
 bool hasCommand(CLI::App& app, const std::string& name) {
   for (CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; }))
     if (sub->get_name() == name) return true;
@@ -27,10 +36,9 @@ bool hasCommand(CLI::App& app, const std::string& name) {
 // What is wrong with `pak help …`: a command it does not know (`name`), or more than one.
 int helpError(CLI::App& app, const std::string& name) {
   if (name.empty())
-    std::fprintf(stderr, "pak: error: help takes at most one command (see pak help)\n");
+    printError("", "help takes at most one command (see pak help)");
   else
-    std::fprintf(stderr, "pak: error: help: no command '%s'; the commands are %s\n", name.c_str(),
-                 pak::cli::commandList(app).c_str());
+    printError("help", "no command '" + name + "'; the commands are " + pak::cli::commandList(app));
   return 2;
 }
 }  // namespace
@@ -64,8 +72,7 @@ int main(int argc, char** argv) {
     argv = arguments.data();
   }
   if (argc >= 2 && argv[1][0] != '-' && !hasCommand(app, argv[1])) {
-    std::fprintf(stderr, "pak: error: no command '%s'; the commands are %s (see pak help)\n", argv[1],
-                 commandList(app).c_str());
+    printError("", std::string("no command '") + argv[1] + "'; the commands are " + commandList(app) + " (see pak help)");
     return 2;
   }
   try {
@@ -73,7 +80,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::Success& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::fprintf(stderr, "pak: error: %s\n", usageErrorMessage(app, e).c_str());
+    printError("", usageErrorMessage(app, e));
     return 2;
   }
   try {
@@ -81,13 +88,14 @@ int main(int argc, char** argv) {
       if (sub && sub->parsed()) return action();
     return 2;
   } catch (const pak::InputError& e) {
-    if (e.where().empty())
-      std::fprintf(stderr, "pak: error: %s\n", e.problem().c_str());
-    else
-      std::fprintf(stderr, "pak: error: %s: %s\n", e.where().c_str(), e.problem().c_str());
+    printError(e.where(), e.problem());
+    return 2;
+  } catch (const std::bad_alloc&) {
+    // Every size an input or option sets is bounded; this is what is left (a machine short of memory).
+    printError("", "out of memory");
     return 2;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "pak: internal error: %s\n", e.what());
+    std::fprintf(stderr, "pak: internal error: %s\n", pak::oneLine(e.what()).c_str());
     return 1;
   }
 }

@@ -170,7 +170,10 @@ class OptionTable {
   std::set<std::string> applyConfigObject(const nlohmann::json& json, const std::string& file, const CLI::App& command,
                                           Root& root, GivenLengths* lengths = nullptr) const {
     std::map<std::string, std::string> keyOf;  // option name → the key that set it
-    for (const auto& [key, value] : json.items()) {
+    for (const auto& item : json.items()) {
+      // Named, not a structured binding: the visitor captures them (clang 14 cannot capture one).
+      const std::string& key = item.key();
+      const nlohmann::json& value = item.value();
       const Option<Root>* o = find(key);
       if (!o) throw InputError(file, "unknown option \"" + key + "\"");
       if (given(command, *o)) continue;

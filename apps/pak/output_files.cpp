@@ -1,5 +1,7 @@
 #include "output_files.hpp"
 
+#include <unistd.h>
+
 #include <filesystem>
 #include <system_error>
 
@@ -42,6 +44,25 @@ void checkOutputsBeforeTheRun(const std::vector<PlannedOutput>& outputs, const s
         throw InputError(out.path, std::string("given to both ") + outputs[j].option + " and " + out.option +
                                        "; each output needs its own file");
   }
+}
+
+void checkOutputFolder(const std::string& folder) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (fs::exists(folder, ec) && !fs::is_directory(folder, ec))
+    throw InputError(folder, "cannot write the output folder: a file of that name exists");
+  fs::path existing = fs::absolute(folder, ec);
+  while (!existing.empty() && !fs::exists(existing, ec) && existing.has_parent_path() && existing != existing.parent_path())
+    existing = existing.parent_path();
+  if (!fs::is_directory(existing, ec))
+    throw InputError(folder, "cannot create the output folder: '" + existing.string() + "' is not a folder");
+  if (::access(existing.c_str(), W_OK | X_OK) != 0)
+    throw InputError(folder, "cannot write into '" + existing.string() + "'");
+}
+
+void checkPngWidth(int width, const char* option) {
+  if (width < 1 || width > kMaxPngPixels)
+    throw InputError(option, "must be 1 to " + std::to_string(kMaxPngPixels) + " pixels, got " + std::to_string(width));
 }
 
 void createFolder(const std::string& folder) {

@@ -21,6 +21,13 @@ struct PlannedOutput {
 std::vector<std::string> inputFiles(std::vector<std::string> files, const std::vector<const Library*>& libraries);
 void checkOutputsBeforeTheRun(const std::vector<PlannedOutput>& outputs, const std::vector<std::string>& inputs);
 
+// An output folder the run will create (or fill): not an existing file, and its nearest
+// existing ancestor a writable folder. Throws InputError naming it.
+void checkOutputFolder(const std::string& folder);
+
+// --png-width (or `option`), checked before the run rather than when the PNG is drawn.
+void checkPngWidth(int width, const char* option = "--png-width");
+
 // Creates `folder` and its parents, or throws InputError naming it.
 void createFolder(const std::string& folder);
 

@@ -10,6 +10,8 @@
 
 #include "animation/element_animator.hpp"
 #include "pak/error.hpp"
+#include "pak/limits.hpp"
+#include "pak/sim/canonical_units.hpp"
 #include "pak/geom/blue_noise.hpp"
 #include "pak/geom/rng.hpp"
 #include "sim/canonical_frame.hpp"
@@ -34,7 +36,11 @@ void checkOptions(const AnimationOptions& o, int slices) {
   positive(o.gap, "--gap");
   nonNegative(o.meshSpacing, "--mesh-spacing");
   if (!(o.initialScale > 0.0 && o.initialScale <= 1.0)) throw InputError("--initial-scale", "must be in (0, 1]");
+  if (o.meshSpacing != 0.0 && o.meshSpacing < limits::kMinMeshSpacing)
+    throw InputError("--mesh-spacing", "must be 0 (automatic) or at least " + messageNumber(limits::kMinMeshSpacing) +
+                                           " canonical units");
   checkSimulationParameters(o.simulation);
+  checkRunOptions(o.run);
   positive(o.simulation.cellSize, "--cell-size");  // the exact repulsion reach: no packer default
   const SpacetimeParameters& p = o.spacetime;
   nonNegative(p.timeStrength, "--time-springs");
@@ -45,6 +51,15 @@ void checkOptions(const AnimationOptions& o, int slices) {
   nonNegative(p.guidedGrowth, "--guided-growth");
   nonNegative(p.guidedWallGive, "--guided-wall-give");
   positive(p.timeLength, "--time-length");
+  if (p.timeLength > limits::kMaxTimeLength)
+    throw InputError("--time-length", "must be at most " + messageNumber(limits::kMaxTimeLength));
+  // The spacetime grid spans the 1000-wide frame and the time axis, one cell per reach.
+  const double cell = o.simulation.cellSize;
+  const double cells = std::pow(kCanonicalSide / cell + 2.0, 2) * (p.timeLength / cell + 2.0);
+  if (cells > limits::kMaxSpacetimeCells)
+    throw InputError("--cell-size", messageNumber(cell) + " is too fine: the spacetime grid would have " +
+                                        messageNumber(cells) + " cells (at most " +
+                                        messageNumber(limits::kMaxSpacetimeCells) + ")");
   positive(o.stop.closeness, "--closeness");
   nonNegative(o.stop.stallGrowth, "--stall-growth");
   if (o.stop.stallWindow < 1) throw InputError("--stall-window", "must be at least 1");

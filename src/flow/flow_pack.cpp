@@ -13,6 +13,7 @@
 #include "flow/streamline_shift.hpp"
 #include "flow/streamlines.hpp"
 #include "pak/error.hpp"
+#include "pak/limits.hpp"
 #include "pak/geom/clipping.hpp"
 #include "pak/geom/closest_point.hpp"
 #include "pak/geom/resample.hpp"
@@ -46,6 +47,11 @@ void validate(const FlowOptions& o) {
   if (!automaticOrPositive(o.maxLength) || (o.maxLength > 0.0 && o.minLength > o.maxLength))
     throw InputError("--max-length", "must be a positive number (0: automatic), at least --min-length");
   if (!positive(o.sampleSpacing)) throw InputError("--sample-spacing", "must be a positive number");
+  if (o.sampleSpacing < limits::kMinSampleSpacing)
+    throw InputError("--sample-spacing", "must be at least " + messageNumber(limits::kMinSampleSpacing) + " canonical units");
+  if (o.gap != 0.0 && o.gap < limits::kMinFlowGap)
+    throw InputError("--gap", "must be 0 (automatic) or at least " + messageNumber(limits::kMinFlowGap) + " canonical unit");
+  checkRunOptions(o.run);
   if (o.fieldResolution < 8 || o.fieldResolution > 4096) throw InputError("--field-resolution", "must be 8 to 4096");
   if (o.blobResolution < 16 || o.blobResolution > 4096) throw InputError("--blob-resolution", "must be 16 to 4096");
   if (o.lrSamples < 4 || o.lrSamples > 10000) throw InputError("--lr-samples", "must be 4 to 10000");

@@ -33,8 +33,12 @@ Region filledRegion(const Shape& shape, const ClipOptions& options) {
 }
 
 Region paintedRegion(const Shape& shape, const ClipOptions& options) {
+  return paintedRegion(shape, shape.fill ? filledRegion(shape, options) : Region{}, options);
+}
+
+Region paintedRegion(const Shape& shape, const Region& filled, const ClipOptions& options) {
   std::vector<Region> parts;
-  if (shape.fill) parts.push_back(filledRegion(shape, options));
+  if (shape.fill) parts.push_back(filled);
   if (shape.stroke && shape.strokeWidth > 0.0) {
     for (const Subpath& subpath : shape.subpaths)
       parts.push_back(strokeBand(shape, subpath, 0.5 * shape.strokeWidth, options));

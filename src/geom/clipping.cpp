@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "pak/error.hpp"
+#include "pak/limits.hpp"
 
 namespace pak {
 namespace {
@@ -15,6 +16,9 @@ namespace cl = ClipperLib;
 
 // Clipper's exact arithmetic covers |coordinate| < 2^62; stay well inside it.
 constexpr double kMaxScaledCoordinate = 1e18;
+// Up to this many rings, regionFromRings is one Clipper union (results as they always were);
+// beyond, it splits them into runs apart in x first (see there).
+constexpr std::size_t kRingsUnitedAtOnce = 4096;
 
 double scaleFor(double precision) {
   if (!(precision > 0.0) || !std::isfinite(precision))
@@ -86,25 +90,83 @@ cl::PolyFillType toClipper(FillRule rule) {
   return rule == FillRule::EvenOdd ? cl::pftEvenOdd : cl::pftNonZero;
 }
 
+// Clipper reports what it cannot represent by throwing its own exception; it is the input's
+// fault (a coordinate or an offset too large), so it becomes an InputError the caller places.
+template <class Run>
+void clipperGuarded(const Run& run) {
+  try {
+    run();
+  } catch (const cl::clipperException& e) {
+    throw InputError("", std::string("geometry too large to clip (") + e.what() + ")");
+  }
+}
+
 Region runBoolean(cl::ClipType type, const cl::Paths& subject, const cl::Paths& clip, double scale) {
   cl::Clipper clipper;
-  clipper.AddPaths(subject, cl::ptSubject, true);
-  clipper.AddPaths(clip, cl::ptClip, true);
   cl::PolyTree tree;
-  clipper.Execute(type, tree, cl::pftNonZero, cl::pftNonZero);
+  clipperGuarded([&] {
+    clipper.AddPaths(subject, cl::ptSubject, true);
+    clipper.AddPaths(clip, cl::ptClip, true);
+    clipper.Execute(type, tree, cl::pftNonZero, cl::pftNonZero);
+  });
   return toRegion(tree, scale);
 }
 
+// The offset's result reaches |delta| beyond its input: it must stay in Clipper's range too.
 Region runOffset(cl::ClipperOffset& offsetter, double delta, double scale) {
+  if (!(std::abs(delta * scale) <= kMaxScaledCoordinate))
+    throw InputError("", "offset distance " + messageNumber(delta) + " is too large for clipping precision " +
+                             messageNumber(1.0 / scale));
   cl::PolyTree tree;
-  offsetter.Execute(tree, delta * scale);
+  clipperGuarded([&] { offsetter.Execute(tree, delta * scale); });
   return toRegion(tree, scale);
+}
+
+// The arc tolerance an offset by `delta` uses: the asked one, but never so fine that the arcs
+// take millions of points (the budget on Clipper's work for offsets).
+double arcToleranceFor(double delta, const OffsetOptions& options) {
+  return std::max(options.arcTolerance, std::abs(delta) * limits::kMinArcToleranceShare);
 }
 
 void checkOffsetOptions(double delta, const OffsetOptions& options) {
   if (!std::isfinite(delta)) throw InputError("", "offset distance must be finite");
   if (!(options.arcTolerance > 0.0) || !std::isfinite(options.arcTolerance))
     throw InputError("", "offset arc tolerance must be a positive number");
+}
+
+Region uniteRings(const cl::Paths& paths, FillRule rule, double scale) {
+  cl::Clipper clipper;
+  cl::PolyTree tree;
+  clipperGuarded([&] {
+    clipper.AddPaths(paths, cl::ptSubject, true);
+    clipper.Execute(cl::ctUnion, tree, toClipper(rule), toClipper(rule));
+  });
+  return toRegion(tree, scale);
+}
+
+// The rings in runs whose x-extents are apart (a gap between each run and the next), left to
+// right; rings of different runs cannot meet, so each run is united alone.
+std::vector<cl::Paths> columnsApart(cl::Paths paths) {
+  std::vector<std::pair<cl::cInt, cl::cInt>> extents;  // (min x, max x) of each path
+  for (const cl::Path& path : paths) {
+    cl::cInt low = path.front().X, high = low;
+    for (const cl::IntPoint& p : path) low = std::min(low, p.X), high = std::max(high, p.X);
+    extents.push_back({low, high});
+  }
+  std::vector<std::size_t> order(paths.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return extents[a].first < extents[b].first; });
+  std::vector<cl::Paths> runs;
+  cl::cInt reach = 0;
+  for (std::size_t i : order) {
+    if (runs.empty() || extents[i].first > reach) {
+      runs.emplace_back();
+      reach = extents[i].second;
+    }
+    reach = std::max(reach, extents[i].second);
+    runs.back().push_back(std::move(paths[i]));
+  }
+  return runs;
 }
 
 }  // namespace
@@ -119,11 +181,16 @@ Region regionFromRings(const std::vector<Ring>& rings, FillRule rule, const Clip
     for (Vec2 p : ring) path.push_back(toInt(p, scale));
     paths.push_back(std::move(path));
   }
-  cl::Clipper clipper;
-  clipper.AddPaths(paths, cl::ptSubject, true);
-  cl::PolyTree tree;
-  clipper.Execute(cl::ctUnion, tree, toClipper(rule), toClipper(rule));
-  return toRegion(tree, scale);
+  if (paths.size() <= kRingsUnitedAtOnce) return uniteRings(paths, rule, scale);
+  // Clipper's sweep costs each ring the rings beside it (its active edge list is a linked
+  // list): 120,000 tiny subpaths side by side took a second a union. Runs of rings apart in x
+  // are united one by one, the same region; few rings keep one union and its polygon order.
+  Region region;
+  for (const cl::Paths& run : columnsApart(std::move(paths))) {
+    Region part = uniteRings(run, rule, scale);
+    region.insert(region.end(), std::make_move_iterator(part.begin()), std::make_move_iterator(part.end()));
+  }
+  return region;
 }
 
 Region unite(const Region& a, const Region& b, const ClipOptions& options) {
@@ -154,7 +221,7 @@ Region intersect(const Region& a, const Region& b, const ClipOptions& options) {
 Region offset(const Region& region, double delta, const OffsetOptions& options) {
   checkOffsetOptions(delta, options);
   const double scale = scaleFor(options.precision);
-  cl::ClipperOffset offsetter(2.0, options.arcTolerance * scale);
+  cl::ClipperOffset offsetter(2.0, arcToleranceFor(delta, options) * scale);
   offsetter.AddPaths(toPaths(region, scale), cl::jtRound, cl::etClosedPolygon);
   return runOffset(offsetter, delta, scale);
 }
@@ -166,7 +233,7 @@ Region offsetPolyline(const Polyline& line, double delta, const OffsetOptions& o
   cl::Path path;
   path.reserve(line.size());
   for (Vec2 p : line) path.push_back(toInt(p, scale));
-  cl::ClipperOffset offsetter(2.0, options.arcTolerance * scale);
+  cl::ClipperOffset offsetter(2.0, arcToleranceFor(delta, options) * scale);
   offsetter.AddPath(path, cl::jtRound, cl::etOpenRound);
   return runOffset(offsetter, delta, scale);
 }
@@ -200,7 +267,7 @@ Region strokeOutline(const Polyline& line, bool closed, double delta, const Stro
       return {square};
     }
     // Round: Clipper turns a one-point path with a round join into a disc.
-    cl::ClipperOffset offsetter(2.0, options.arcTolerance * scale);
+    cl::ClipperOffset offsetter(2.0, arcToleranceFor(delta, options) * scale);
     offsetter.AddPath(path, cl::jtRound, cl::etOpenRound);
     return runOffset(offsetter, delta, scale);
   }
@@ -213,7 +280,7 @@ Region strokeOutline(const Polyline& line, bool closed, double delta, const Stro
   cl::EndType end = cl::etClosedLine;
   if (!closed || path.size() < 3)
     end = style.cap == StrokeCap::Butt ? cl::etOpenButt : style.cap == StrokeCap::Square ? cl::etOpenSquare : cl::etOpenRound;
-  cl::ClipperOffset offsetter(std::max(1.0, style.miterLimit), options.arcTolerance * scale);
+  cl::ClipperOffset offsetter(std::max(1.0, style.miterLimit), arcToleranceFor(delta, options) * scale);
   offsetter.AddPath(path, join, end);
   return runOffset(offsetter, delta, scale);
 }

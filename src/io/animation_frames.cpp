@@ -8,6 +8,7 @@
 
 #include "io/drawing_raster.hpp"
 #include "pak/error.hpp"
+#include "pak/io/atomic_file.hpp"
 
 namespace pak::animation_frames {
 
@@ -47,8 +48,9 @@ void makeFolder(const std::string& folder) {
   std::error_code error;
   if (fs::is_directory(folder, error)) return;
   if (fs::exists(folder, error)) throw InputError(folder, "cannot write frames: it is a file, not a folder");
-  fs::create_directories(folder, error);
+  const bool created = fs::create_directories(folder, error);
   if (error) throw InputError(folder, "cannot create the folder: " + error.message());
+  if (created) listCreatedFolder(folder);  // removed again if the run fails before filling it
 }
 
 long long frameStartCentiseconds(std::size_t index, std::size_t count, double duration) {

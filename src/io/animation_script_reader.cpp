@@ -25,6 +25,13 @@ using Json = nlohmann::ordered_json;  // file order, so the first typo reported 
 constexpr int kMaxSlices = 1000;
 constexpr int kMaxFrames = 10000;
 constexpr int kMaxCount = 10000;
+// Bounds on the numbers of a script, far beyond any animation but small enough that the
+// geometry built from them stays finite and the simulation's grids stay small: a rotation of
+// 1e308 degrees has no meaningful angle, and a translation of 1e9 leaves every container.
+constexpr double kMaxDegrees = 36000.0;   // a hundred turns over one loop
+constexpr double kMaxScale = 1000.0;
+constexpr double kMaxCoordinate = 1e6;     // translations, handles and targets, in file units
+constexpr double kMaxDuration = 86400.0;   // one day per loop
 
 class Reader {
  public:
@@ -55,6 +62,13 @@ class Reader {
     if (!value.is_number()) fail(path, "must be a number");
     const double x = value.get<double>();
     if (!std::isfinite(x)) fail(path, "must be a finite number");
+    return x;
+  }
+
+  // A number within [-limit, limit], the limit named in the message.
+  double bounded(const Json& value, const std::string& path, double limit) const {
+    const double x = number(value, path);
+    if (std::abs(x) > limit) fail(path, "must be within ±" + messageNumber(limit) + " (got " + messageNumber(x) + ")");
     return x;
   }
 
@@ -95,10 +109,10 @@ class Reader {
     return result;
   }
 
-  std::vector<ScalarKey> scalarKeys(const Json& value, const std::string& path, bool positive) const {
+  std::vector<ScalarKey> scalarKeys(const Json& value, const std::string& path, bool positive, double limit) const {
     return keys<ScalarKey>(value, path, [&](const Json& key, const std::string& at, double t) {
       checkKeys(key, at, {"t", "value"});
-      const double v = number(member(key, at, "value"), at + ".value");
+      const double v = bounded(member(key, at, "value"), at + ".value", limit);
       if (positive && v <= 0.0) fail(at + ".value", "must be positive");
       return ScalarKey{t, v};
     });
@@ -107,7 +121,8 @@ class Reader {
   std::vector<PointKey> pointKeys(const Json& value, const std::string& path, const char* xName, const char* yName) const {
     return keys<PointKey>(value, path, [&](const Json& key, const std::string& at, double t) {
       checkKeys(key, at, {"t", xName, yName});
-      return PointKey{t, {number(member(key, at, xName), at + "." + xName), number(member(key, at, yName), at + "." + yName)}};
+      return PointKey{t, {bounded(member(key, at, xName), at + "." + xName, kMaxCoordinate),
+                          bounded(member(key, at, yName), at + "." + yName, kMaxCoordinate)}};
     });
   }
 
@@ -116,12 +131,13 @@ class Reader {
       checkKeys(key, at, {"t", "x", "y", "scale", "rotation"});
       GuideTarget target;
       target.t = t;
-      target.position = {number(member(key, at, "x"), at + ".x"), number(member(key, at, "y"), at + ".y")};
+      target.position = {bounded(member(key, at, "x"), at + ".x", kMaxCoordinate),
+                         bounded(member(key, at, "y"), at + ".y", kMaxCoordinate)};
       if (key.contains("scale")) {
-        target.scale = number(key["scale"], at + ".scale");
+        target.scale = bounded(key["scale"], at + ".scale", kMaxScale);
         if (*target.scale <= 0.0) fail(at + ".scale", "must be positive");
       }
-      if (key.contains("rotation")) target.rotation = number(key["rotation"], at + ".rotation");
+      if (key.contains("rotation")) target.rotation = bounded(key["rotation"], at + ".rotation", kMaxDegrees);
       return target;
     });
     if (result.size() < 2) fail(path, "a guided element needs at least two targets");
@@ -147,8 +163,9 @@ class Reader {
     spec.svg = file.is_absolute() || folder.empty() ? svg : (fs::path(folder) / file).lexically_normal().string();
 
     if (value.contains("count")) spec.count = integer(value["count"], path + ".count", 1, kMaxCount);
-    if (value.contains("rotation")) spec.animation.rotation = scalarKeys(value["rotation"], path + ".rotation", false);
-    if (value.contains("scale")) spec.animation.scale = scalarKeys(value["scale"], path + ".scale", true);
+    if (value.contains("rotation"))
+      spec.animation.rotation = scalarKeys(value["rotation"], path + ".rotation", false, kMaxDegrees);
+    if (value.contains("scale")) spec.animation.scale = scalarKeys(value["scale"], path + ".scale", true, kMaxScale);
     if (value.contains("translation"))
       spec.animation.translation = pointKeys(value["translation"], path + ".translation", "x", "y");
     if (value.contains("handles")) {
@@ -168,7 +185,7 @@ class Reader {
         spec.orientation = std::nullopt;
         spec.orientationFromField = kind == "field";
       } else if (orientation.is_number()) {
-        spec.orientation = number(orientation, path + ".orientation");
+        spec.orientation = bounded(orientation, path + ".orientation", kMaxDegrees);
       } else {
         fail(path + ".orientation", "must be a number (degrees), \"random\" or \"field\"");
       }
@@ -210,7 +227,7 @@ class Reader {
       script.loop = root["loop"].get<bool>();
     }
     if (root.contains("duration")) {
-      script.duration = number(root["duration"], "duration");
+      script.duration = bounded(root["duration"], "duration", kMaxDuration);
       if (script.duration <= 0.0) fail("duration", "must be positive (seconds)");
     }
     const Json& elements = member(root, "", "elements");

@@ -16,6 +16,7 @@
 #include <system_error>
 
 #include "pak/error.hpp"
+#include "pak/io/output_batch.hpp"
 
 namespace pak {
 namespace {
@@ -133,6 +134,21 @@ void commitTemporary(const std::string& temporary, const std::string& path) {
   }
 }
 
+void finishTemporary(const std::string& temporary, const std::string& path) {
+  if (!deferToOpenBatch(temporary, path)) commitTemporary(temporary, path);
+}
+
+void discardTemporary(const std::string& temporary) {
+  removeQuietly(temporary);
+  unlistTemporary(temporary);
+}
+
+void removeEmptyCreatedFolders() noexcept {
+  // Deepest first: a folder the run made inside another it made.
+  for (auto at = std::rbegin(folderSlots); at != std::rend(folderSlots); ++at)
+    if (at->state.load(std::memory_order_acquire) == TemporarySlot::kListed) ::rmdir(at->path);
+}
+
 void writeFileAtomically(const std::string& path, const std::string& contents) {
   std::string temporary = temporaryPathFor(path);
   // O_EXCL: never write through a file (or link) someone else put there.
@@ -150,7 +166,7 @@ void writeFileAtomically(const std::string& path, const std::string& contents) {
     unlistTemporary(temporary);
     throw InputError(path, "cannot write: " + describeErrno(error));
   }
-  commitTemporary(temporary, path);
+  finishTemporary(temporary, path);
 }
 
 void listCreatedFolder(const std::string& folder) { listIn(std::begin(folderSlots), std::end(folderSlots), folder); }

@@ -11,9 +11,7 @@
 
 namespace pak::raster {
 
-// Big enough for print previews, small enough that a typo in --width cannot eat the memory
-// (16384² × 4 bytes = 1 GiB), and inside cairo's 32767-pixel limit.
-constexpr int kMaxPixels = 16384;
+constexpr int kMaxPixels = kMaxPngPixels;
 
 struct PixelSize {
   int width = 0, height = 0;

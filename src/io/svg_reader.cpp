@@ -30,7 +30,9 @@
 #include <vector>
 
 #include "io/rgb_components.hpp"
+#include "io/xml_nesting.hpp"
 #include "pak/error.hpp"
+#include "pak/io/message_text.hpp"
 #include "pak/io/text_file.hpp"
 
 namespace pak {
@@ -614,11 +616,13 @@ class NodeContext {
   void set(tag::attribute::color, int rgb, tag::skip_icc_color) { set(tag::attribute::color(), rgb); }
 
   // --- other presentation properties
-  void set(tag::attribute::fill_opacity, double v) { style_.fillOpacity = std::clamp(v, 0.0, 1.0); }
-  void set(tag::attribute::stroke_opacity, double v) { style_.strokeOpacity = std::clamp(v, 0.0, 1.0); }
-  void set(tag::attribute::opacity, double v) { ownOpacity_ = std::clamp(v, 0.0, 1.0); }
+  void set(tag::attribute::fill_opacity, double v) { setOpacity(style_.fillOpacity, "fill-opacity", v); }
+  void set(tag::attribute::stroke_opacity, double v) { setOpacity(style_.strokeOpacity, "stroke-opacity", v); }
+  void set(tag::attribute::opacity, double v) { setOpacity(ownOpacity_, "opacity", v); }
+  // A width beyond any coordinate is a broken file; outlining it would overflow the clipper.
   void set(tag::attribute::stroke_width, double v) {
-    if (std::isfinite(v) && v >= 0) style_.strokeWidth = v;
+    if (std::isfinite(v) && v >= 0 && v <= kAbsurdCoordinate) style_.strokeWidth = v;
+    else state_->warn(describe(), "ignored stroke-width " + formatNumber(v) + " (must be 0 to 1e9)");
   }
   void set(tag::attribute::stroke_linecap, tag::value::butt) { style_.lineCap = StrokeCap::Butt; }
   void set(tag::attribute::stroke_linecap, tag::value::round) { style_.lineCap = StrokeCap::Round; }
@@ -657,6 +661,11 @@ class NodeContext {
   }
   // SVG++ reports a list it could not parse after handing over what it read: back to before.
   void rejectDashArray() { style_.dashArray = dashBeforeSet_; }
+  // An opacity is clamped to [0, 1] as SVG says; NaN (which clamping keeps) is ignored.
+  void setOpacity(double& target, const char* name, double v) {
+    if (std::isnan(v)) state_->warn(describe(), std::string("ignored ") + name + " NaN");
+    else target = std::clamp(v, 0.0, 1.0);
+  }
   void set(tag::attribute::stroke_dashoffset, double v) {
     if (std::isfinite(v)) style_.dashOffset = v;
   }
@@ -994,7 +1003,9 @@ class StopContext : public NodeContext {
   void set(tag::attribute::stop_color, int rgb) { stop_.rgb = static_cast<std::uint32_t>(rgb); }
   void set(tag::attribute::stop_color, int rgb, tag::skip_icc_color) { set(tag::attribute::stop_color(), rgb); }
   void set(tag::attribute::stop_color, tag::value::currentColor) { stop_.rgb = style_.color; }
-  void set(tag::attribute::stop_opacity, double v) { stop_.opacity = std::clamp(v, 0.0, 1.0); }
+  void set(tag::attribute::stop_opacity, double v) {
+    if (!std::isnan(v)) stop_.opacity = std::clamp(v, 0.0, 1.0);  // NaN: ignored, as a missing value
+  }
   void on_exit_element() { gradient_->addStop(stop_); }
 
  private:
@@ -1385,6 +1396,43 @@ void roundRgbComponents(rapidxml_ns::xml_document<char>& xml, XmlNode* root) {
   });
 }
 
+// Whether SVG++ parses the attribute `a` (with Boost.Spirit, whose character classes are
+// undefined beyond ASCII): every SVG attribute but the free-text ones, names and labels.
+bool parsedBySvgpp(const rapidxml_ns::xml_attribute<char>* a) {
+  const std::string_view name(a->name(), a->name_size()), local(a->local_name(), a->local_name_size());
+  if (local == "id" || local == "class" || local.starts_with("data-")) return false;
+  // inkscape:label, sodipodi:…, xml:lang: prefixed attributes other than xlink are not SVG's.
+  return name.find(':') == std::string_view::npos || name.starts_with("xlink:");
+}
+
+// Non-ASCII bytes in the values SVG++ parses become '?', in place: such a value (a colour
+// "réd", a length "1０") is not valid SVG, so it is then skipped with a warning like any other
+// unreadable value. The source text, which layers are copied from, keeps the bytes as written.
+void asciiForSvgpp(XmlNode* root) {
+  forEachElement(root, [](XmlNode* node) {
+    for (auto* a = node->first_attribute(); a; a = a->next_attribute()) {
+      if (!parsedBySvgpp(a)) continue;
+      char* value = a->value();
+      for (std::size_t i = 0; i < a->value_size(); ++i)
+        if (static_cast<unsigned char>(value[i]) >= 0x80) value[i] = '?';
+    }
+  });
+}
+
+// The deepest element nesting under `root`, counted without recursion.
+int nestingDepth(XmlNode* root) {
+  int deepest = 0;
+  std::vector<std::pair<XmlNode*, int>> stack{{root, 1}};
+  while (!stack.empty()) {
+    const auto [node, depth] = stack.back();
+    stack.pop_back();
+    deepest = std::max(deepest, depth);
+    for (XmlNode* child = node->first_node(); child; child = child->next_sibling())
+      if (child->type() == rapidxml_ns::node_element) stack.push_back({child, depth + 1});
+  }
+  return deepest;
+}
+
 // ---------------------------------------------------------------------------------------
 // <use>, expanded as SVG defines it: the <use> becomes a <g> with its attributes, its
 // transform followed by translate(x, y), holding a copy of the referenced element (a
@@ -1443,7 +1491,10 @@ void expandUses(rapidxml_ns::xml_document<char>& xml, XmlNode* root, ReaderState
   std::size_t copies = 0;
   bool overBudget = false;
   for (std::size_t next = 0; next < pending.size(); ++next) {
-    auto [use, depth] = pending[next];
+    // Plain variables, not a structured binding: the lambdas below capture them (clang 14,
+    // which builds the fuzz targets, cannot capture a binding).
+    XmlNode* const use = pending[next].first;
+    const int depth = pending[next].second;
     const std::string id = attributeOf(use, "id");
     const std::string where = state.placeOf(use, "<use" + (id.empty() ? std::string() : " id=\"" + id + "\"") + ">");
     auto drop = [&](const std::string& why) {
@@ -1900,11 +1951,18 @@ std::vector<SvgShape> clippedShapes(const SvgShape& shape, const Region& clip, d
   return out;
 }
 
-SvgDocument readSvgString(const std::string& text, const std::string& name, const SvgReadOptions& options) {
+SvgDocument readSvgString(const std::string& input, const std::string& name, const SvgReadOptions& options) {
   SvgDocument document;
   document.file = name;
   if (!(options.flatness > 0) || !std::isfinite(options.flatness))
     throw InputError(name, "flatness must be a positive number, got " + formatNumber(options.flatness));
+  // The input boundary: from here on, and in every output, text is UTF-8.
+  std::size_t notUtf8 = 0;
+  const std::string text = validUtf8(input, &notUtf8);
+  if (notUtf8 > 0)
+    document.warnings.push_back({name, "the file is not UTF-8: " + std::to_string(notUtf8) +
+                                           " byte(s) replaced by U+FFFD (save it as UTF-8)"});
+  checkXmlNesting(text, name);  // before rapidxml and SVG++, which recurse per level
 
   // rapidxml parses in place and keeps pointers into the buffer: it must outlive the walk.
   std::vector<char> buffer(text.begin(), text.end());
@@ -1932,6 +1990,10 @@ SvgDocument readSvgString(const std::string& text, const std::string& name, cons
   state.lines = &lines;
   state.document = &document;
   expandUses(xml, root, state, lines);
+  if (nestingDepth(root) > kMaxXmlNesting)
+    throw InputError(name, "elements nested more than " + std::to_string(kMaxXmlNesting) +
+                               " deep once <use> copies are expanded");
+  asciiForSvgpp(root);
   forEachElement(root, [&](XmlNode* node) {
     if (std::string id = attributeOf(node, "id"); !id.empty()) state.ids.insert(std::move(id));
   });
@@ -2004,16 +2066,21 @@ SvgDocument readSvgString(const std::string& text, const std::string& name, cons
     }
     shape.fill = resolvePaint(state, pending.fill, pending.color, pending.fillOpacity, pending.description);
     shape.stroke = resolvePaint(state, pending.stroke, pending.color, pending.strokeOpacity, pending.description);
-    std::optional<Region> clip = pending.clips.empty() ? std::nullopt : clipRegion(state, pending, tolerance);
-    if (clip && shape.stroke && !shape.dashArray.empty())
-      state.warn(pending.description, "stroke-dasharray under a clip-path: the clipped stroke is drawn solid");
-    std::vector<SvgShape> parts = withStretchedStroke(std::move(shape), pending, tolerance);
-    for (SvgShape& part : parts) {
-      if (!clip) {
-        document.shapes.push_back(std::move(part));
-        continue;
+    // The geometry routines know no file: what they reject is said to be this shape's.
+    try {
+      std::optional<Region> clip = pending.clips.empty() ? std::nullopt : clipRegion(state, pending, tolerance);
+      if (clip && shape.stroke && !shape.dashArray.empty())
+        state.warn(pending.description, "stroke-dasharray under a clip-path: the clipped stroke is drawn solid");
+      std::vector<SvgShape> parts = withStretchedStroke(std::move(shape), pending, tolerance);
+      for (SvgShape& part : parts) {
+        if (!clip) {
+          document.shapes.push_back(std::move(part));
+          continue;
+        }
+        for (SvgShape& clipped : clippedShapes(part, *clip, tolerance)) document.shapes.push_back(std::move(clipped));
       }
-      for (SvgShape& clipped : clippedShapes(part, *clip, tolerance)) document.shapes.push_back(std::move(clipped));
+    } catch (const InputError& error) {
+      throw attributed(error, name + ": " + pending.description);
     }
   }
   state.currentTopGroup = -1;

@@ -193,7 +193,7 @@ void writeVideo(const std::vector<Drawing>& frames, const std::string& path, con
     std::string detail = log ? lastLine(log.get()) : std::string();
     throw InputError(path, "ffmpeg failed" + (detail.empty() ? std::string() : ": " + detail));
   }
-  commitTemporary(temporary, path);
+  finishTemporary(temporary, path);
 }
 
 }  // namespace pak

@@ -11,6 +11,7 @@
 #include "metrics/nearest_occupied.hpp"
 #include "metrics/small_holes.hpp"
 #include "pak/error.hpp"
+#include "pak/limits.hpp"
 
 namespace pak {
 namespace {
@@ -30,8 +31,8 @@ struct EvennessGrid {
 };
 
 void checkInput(const PackingGeometry& packing, const EvennessOptions& options) {
-  if (options.resolution < 2 || options.resolution > 10000)
-    throw InputError(packing.source, "evenness grid resolution must be 2 to 10000");
+  if (options.resolution < 2 || options.resolution > limits::kMaxGridResolution)
+    throw InputError("--grid", "must be 2 to " + std::to_string(limits::kMaxGridResolution));
   if (!(options.smallHoleArea >= 0.0) || !std::isfinite(options.smallHoleArea))
     throw InputError(packing.source, "small-hole area must be a non-negative fraction");
   if (packing.container.empty() || !(area(packing.container) > 0.0)) throw InputError(packing.source, "no container");

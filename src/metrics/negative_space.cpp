@@ -5,6 +5,7 @@
 
 #include "metrics/metrics_internal.hpp"
 #include "pak/error.hpp"
+#include "pak/limits.hpp"
 #include "pak/geom/simplify.hpp"
 
 namespace pak::metrics_internal {
@@ -20,8 +21,11 @@ Frame makeFrame(const PackingGeometry& packing, double arcTolerance) {
   // 1e-7 of the container keeps Clipper's integers in its fast 32-bit-product range.
   frame.clip.precision = frame.side * 1e-7;
   frame.offset.precision = frame.clip.precision;
-  if (arcTolerance < 0.0 || !std::isfinite(arcTolerance))
-    throw InputError(packing.source, "arc tolerance must be a non-negative number");
+  // Much finer, Clipper's arcs take millions of points (limits.hpp).
+  const double finest = frame.side * limits::kMinArcToleranceShare;
+  if (!(arcTolerance == 0.0 || (arcTolerance >= finest && arcTolerance <= frame.side)))
+    throw InputError("--arc-tolerance", "must be 0 (automatic) or " + messageNumber(finest) + " to " +
+                                            messageNumber(frame.side) + " (1e-8 to 1 of the container's size)");
   frame.offset.arcTolerance = arcTolerance > 0.0 ? arcTolerance : frame.side * 1e-4;
   for (std::size_t i = 0; i < packing.elements.size(); ++i) {
     const std::string name = "element " + std::to_string(i + 1);

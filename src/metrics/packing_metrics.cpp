@@ -4,6 +4,7 @@
 
 #include "metrics/metrics_internal.hpp"
 #include "pak/error.hpp"
+#include "pak/limits.hpp"
 
 namespace pak {
 namespace {
@@ -14,14 +15,19 @@ std::vector<double> evenly(double hi, int count) {
   return r;
 }
 
-void checkOptions(const PackingGeometry& packing, const MetricsOptions& o) {
-  if (o.radii < 2) throw InputError(packing.source, "metrics need at least 2 radii");
-  if (o.gridResolution < 2) throw InputError(packing.source, "grid resolution must be at least 2");
-  if (o.histogramBins < 1) throw InputError(packing.source, "histogram needs at least 1 bin");
-  if (!(o.gap >= 0.0) || !std::isfinite(o.gap))
-    throw InputError(packing.source, "gap must be a non-negative number");
-  if (!(o.overlapMaxRadius >= 0.0) || !std::isfinite(o.overlapMaxRadius))
-    throw InputError(packing.source, "overlap radius must be a non-negative number");
+// Each error names the option as `pak metrics` spells it; the bounds are pak/limits.hpp's.
+void checkOptions(const MetricsOptions& o, double containerSide) {
+  using namespace limits;
+  if (o.radii < 2 || o.radii > kMaxRadii) throw InputError("--radii", "must be 2 to " + std::to_string(kMaxRadii));
+  if (o.gridResolution < 2 || o.gridResolution > kMaxGridResolution)
+    throw InputError("--grid", "must be 2 to " + std::to_string(kMaxGridResolution));
+  if (o.histogramBins < 1 || o.histogramBins > kMaxHistogramBins)
+    throw InputError("--bins", "must be 1 to " + std::to_string(kMaxHistogramBins));
+  // A gap wider than the container measures nothing, and its offsets overflow.
+  if (!(o.gap >= 0.0 && o.gap <= containerSide))
+    throw InputError("--gap", "must be 0 (estimated) to the container's size, " + messageNumber(containerSide));
+  if (!(o.overlapMaxRadius >= 0.0 && o.overlapMaxRadius <= containerSide))
+    throw InputError("", "the overlap radius must be 0 to the container's size, " + messageNumber(containerSide));
 }
 
 // H(r) = -Q'(r): central differences inside, one-sided at the ends.
@@ -40,8 +46,8 @@ std::vector<double> negativeDerivative(const Curve& q) {
 
 PackingMetrics measurePacking(const PackingGeometry& original, const MetricsOptions& options) {
   using namespace metrics_internal;
-  checkOptions(original, options);
   const Frame frame = makeFrame(original, options.arcTolerance);
+  checkOptions(options, frame.side);
   const Region negative = negativeSpace(original, frame);
   const PackingGeometry packing = simplifiedForOffsets(original, frame);
 

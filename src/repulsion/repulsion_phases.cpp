@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "pak/error.hpp"
+#include "pak/limits.hpp"
 #include "pak/geom/clipping.hpp"
 #include "pak/geom/verify.hpp"
 #include "pak/repulsion/tiling.hpp"
@@ -28,11 +29,15 @@ void checkOptions(const RepulsionOptions& o) {
   };
   positive(o.gap, "--gap");
   nonNegative(o.meshSpacing, "--mesh-spacing");
+  if (o.meshSpacing != 0.0 && o.meshSpacing < limits::kMinMeshSpacing)
+    throw InputError("--mesh-spacing", "must be 0 (automatic) or at least " + messageNumber(limits::kMinMeshSpacing) +
+                                           " canonical unit");
   if (o.count < 0) throw InputError("--count", "must not be negative");
   if (o.count > 100000) throw InputError("--count", std::to_string(o.count) + " is absurdly large");
   positive(o.elementArea, "--element-area");
   positive(o.initialCoverage, "--initial-coverage");
   checkSimulationParameters(o.simulation);
+  checkRunOptions(o.run);
   positive(o.stop.targetFill, "--target-fill");
   if (o.stop.stallWindow < 1) throw InputError("--stall-window", "must be at least 1");
   nonNegative(o.stop.stallEpsilon, "--stall-epsilon");

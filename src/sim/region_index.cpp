@@ -105,6 +105,13 @@ RegionIndex::Query RegionIndex::closestAround(Vec2 p) const {
   };
   int ci = cellOf(p.x - origin_.x, nx_);
   int cj = cellOf(p.y - origin_.y, ny_);
+  // p's distance to the grid (0 inside): every cell is at least that far from p, in a
+  // direction orthogonal to the ring distance below, so a far point stops as soon as a
+  // near point would, whatever the distance (p minus its projection on the grid box is
+  // orthogonal to every vector inside the box).
+  const Vec2 gridMax = origin_ + Vec2{nx_ * cell_, ny_ * cell_};
+  const Vec2 onGrid{std::clamp(p.x, origin_.x, gridMax.x), std::clamp(p.y, origin_.y, gridMax.y)};
+  const double offGridSquared = lengthSquared(p - onGrid);
   double best = std::numeric_limits<double>::infinity();
   int bestSegment = -1;
   double bestT = 0.0;
@@ -129,7 +136,8 @@ RegionIndex::Query RegionIndex::closestAround(Vec2 p) const {
         if (r == 0) break;
       }
     }
-    if (bestSegment >= 0 && std::sqrt(best) <= r * cell_) break;
+    // Every cell beyond ring r is at least r cells from p's cell, plus the distance off the grid.
+    if (bestSegment >= 0 && std::sqrt(best) <= std::sqrt(offGridSquared + (r * cell_) * (r * cell_))) break;
   }
   Query q;
   if (bestSegment < 0) return q;

@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "pak/error.hpp"
+#include "pak/limits.hpp"
 
 namespace pak {
 
@@ -28,6 +29,12 @@ void checkSimulationParameters(const SimulationParameters& p) {
   for (const auto& [member, option] : positive)
     if (!(p.*member > 0.0) || !std::isfinite(p.*member)) throw InputError(option, "must be a positive number");
   if (!(p.damping >= 0.0 && p.damping < 1.0)) throw InputError("--damping", "must be in [0, 1)");
+  if (p.timeStep > limits::kMaxTimeStep)
+    throw InputError("--time-step", "must be at most " + messageNumber(limits::kMaxTimeStep) + " (thesis: 0.1)");
+  // 0 asks the packer for its own cell (pack: 2 × mesh spacing); animate requires one.
+  if (p.cellSize != 0.0 && !(p.cellSize >= limits::kMinCellSize && p.cellSize <= limits::kMaxCellSize))
+    throw InputError("--cell-size", "must be " + messageNumber(limits::kMinCellSize) + " to " +
+                                        messageNumber(limits::kMaxCellSize) + " canonical units (0: automatic)");
 }
 
 }  // namespace pak

@@ -179,3 +179,23 @@ TEST(Clipping, PrecisionRoundsToTheGrid) {
   EXPECT_DOUBLE_EQ(bounds(r).min.x, 0.0);
   EXPECT_DOUBLE_EQ(bounds(r).max.x, 10.0);
 }
+
+TEST(Clipping, ManyRingsAreUnitedColumnByColumnToTheSameRegion) {
+  // 100 × 50 pairs of overlapping squares: more rings than one union takes, in columns apart.
+  std::vector<Ring> rings;
+  for (int c = 0; c < 100; ++c)
+    for (int r = 0; r < 50; ++r) {
+      rings.push_back(Ring{{2.0 * c, 2.0 * r}, {2.0 * c + 1, 2.0 * r}, {2.0 * c + 1, 2.0 * r + 1}, {2.0 * c, 2.0 * r + 1}});
+      rings.push_back(Ring{{2.0 * c + 0.5, 2.0 * r}, {2.0 * c + 1.5, 2.0 * r}, {2.0 * c + 1.5, 2.0 * r + 1}, {2.0 * c + 0.5, 2.0 * r + 1}});
+    }
+  const Region united = regionFromRings(rings, FillRule::NonZero);
+  EXPECT_EQ(united.size(), 5000u);
+  EXPECT_NEAR(area(united), 5000 * 1.5, 1e-6);
+  // Even-odd: the overlaps cancel, each pair leaves two strips.
+  const Region evenOdd = regionFromRings(rings, FillRule::EvenOdd);
+  EXPECT_EQ(evenOdd.size(), 10000u);
+  EXPECT_NEAR(area(evenOdd), 5000 * 1.0, 1e-6);
+  // A ring spanning every column joins them into one run: one polygon.
+  rings.push_back(Ring{{0, -1}, {200, -1}, {200, 101}, {0, 101}});
+  EXPECT_EQ(regionFromRings(rings, FillRule::NonZero).size(), 1u);
+}

@@ -55,6 +55,9 @@ Region filledRegion(const Shape& shape, const ClipOptions& = {});
 // strokeWidth/2 with the shape's caps, joins and miter limit. A zero-length subpath with round
 // or square caps paints a dot, as renderers do.
 Region paintedRegion(const Shape& shape, const ClipOptions& = {});
+// The same, given the shape's filledRegion with the same options: a caller that needs both
+// unites the rings once (a shape of 100,000 subpaths costs Clipper a second a union).
+Region paintedRegion(const Shape& shape, const Region& filled, const ClipOptions& = {});
 // Bounds of the points, grown by strokeWidth/2 when the shape has a stroke.
 Box bounds(const Shape& shape);
 Box bounds(const std::vector<Shape>& shapes);

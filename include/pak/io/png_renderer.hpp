@@ -11,6 +11,10 @@
 
 namespace pak {
 
+// The widest and tallest raster: big enough for print previews, small enough that a typo in a
+// width cannot eat the memory (16384² × 4 bytes = 1 GiB), and inside cairo's 32767-pixel limit.
+inline constexpr int kMaxPngPixels = 16384;
+
 struct PngOptions {
   int width = 1000;                          // pixels; height follows the aspect ratio
   std::optional<Color> background = Color{255, 255, 255, 1.0};  // nullopt: transparent

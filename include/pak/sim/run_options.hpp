@@ -13,4 +13,9 @@ struct RunOptions {
   const std::atomic<bool>* stopRequest = nullptr;
 };
 
+// The most worker threads a run may ask for: limits::kThreadsPerCore per core.
+int maxThreads();
+// Throws InputError("--threads", …) for a negative count or one above maxThreads().
+void checkRunOptions(const RunOptions& options);
+
 }  // namespace pak

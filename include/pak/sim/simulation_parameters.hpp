@@ -42,7 +42,7 @@ struct SimulationParameters {
 
 // Throws InputError naming the option as `pak` spells it (--k-edge, --time-step, …) for a
 // negative or non-finite strength or rate, a time step or velocity cap that is not positive,
-// or damping outside [0, 1).
+// or damping outside [0, 1), and for a time step or cell size beyond pak/limits.hpp.
 void checkSimulationParameters(const SimulationParameters& parameters);
 
 }  // namespace pak
