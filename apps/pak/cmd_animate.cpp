@@ -16,6 +16,7 @@
 #include "output_files.hpp"
 #include "run_eta.hpp"
 #include "pak/error.hpp"
+#include "pak/limits.hpp"
 #include "pak/io/output_batch.hpp"
 #include "pak/io/animation_checkpoint.hpp"
 #include "pak/io/animation_output.hpp"
@@ -51,9 +52,11 @@ void checkOutputOptions(const AnimateArguments& args) {
   if (args.common.every < 1) throw InputError("--every", "must be at least 1");
   if (args.width < 16 || args.width > 8000) throw InputError("--width", "must be between 16 and 8000 pixels");
   if (args.sheetFrames < 1 || args.sheetFrames > 100) throw InputError("--sheet-frames", "must be between 1 and 100");
-  if (args.svgKeyframes < 2 || args.svgKeyframes > 10000) throw InputError("--svg-keyframes", "must be between 2 and 10000");
-  if (args.frames < 0 || args.frames > 10000) throw InputError("--frames", "must be between 1 and 10000");
-  if (args.evennessFrames < 0 || args.evennessFrames > 10000) throw InputError("--evenness-frames", "must be between 0 and 10000");
+  using limits::kMaxFrames;
+  const std::string upTo = " and " + std::to_string(kMaxFrames);
+  if (args.svgKeyframes < 2 || args.svgKeyframes > kMaxFrames) throw InputError("--svg-keyframes", "must be between 2" + upTo);
+  if (args.frames < 0 || args.frames > kMaxFrames) throw InputError("--frames", "must be between 1" + upTo);
+  if (args.evennessFrames < 0 || args.evennessFrames > kMaxFrames) throw InputError("--evenness-frames", "must be between 0" + upTo);
   if (!(args.pngAt >= 0.0 && args.pngAt <= 1.0)) throw InputError("--png-at", "must be a time t between 0 and 1");
 }
 

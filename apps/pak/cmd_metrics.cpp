@@ -261,6 +261,14 @@ int runMetrics(MetricsArgs& args, const CLI::App&) {
 
   std::vector<PackingGeometry> packings;
   for (const std::string& file : args.files) packings.push_back(readPacking(file, args.layers));
+  // An offset wider than the container covers all of it, and a huge one overflows the clipper.
+  if (args.visualize)
+    for (const PackingGeometry& p : packings) {
+      Box box;
+      for (const Polygon& poly : p.container) box.add(bounds(poly));
+      const double side = std::max(box.width(), box.height());
+      if (*args.visualize > side) throw InputError("--visualize", "must be 0 to the container's size, " + messageNumber(side));
+    }
 
   // Thesis 6.4: compare at the same negative-space ratio, here the packings' mean.
   std::vector<std::optional<double>> offsets(packings.size());

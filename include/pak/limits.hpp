@@ -20,6 +20,19 @@ constexpr double kMinMeshSpacing = 2.0;
 constexpr double kMaxSpacetimeCells = 4e6;
 constexpr double kMaxTimeLength = 10000.0;
 
+// AnimationPak's counts: frames rendered (--frames, --svg-keyframes, --evenness-frames and the
+// animation file's "frames"), slices simulated, copies of one element.
+constexpr int kMaxFrames = 10000;
+constexpr int kMaxSlices = 1000;
+constexpr int kMaxElementCopies = 10000;
+// The animation file's numbers: far beyond any animation, small enough that the geometry
+// built from them stays finite and the grids small (a rotation of 1e308 degrees has no
+// meaningful angle; a translation of 1e9 leaves every container).
+constexpr double kMaxDegrees = 36000.0;            // a hundred turns over one loop
+constexpr double kMaxAnimationScale = 1000.0;
+constexpr double kMaxAnimationCoordinate = 1e6;    // translations, handles and targets, in file units
+constexpr double kMaxLoopSeconds = 86400.0;        // one day per loop
+
 // Δt: steps beyond this throw elements far outside the frame in one step (thesis: 0.1).
 constexpr double kMaxTimeStep = 10.0;
 

@@ -31,7 +31,8 @@ void checkOptions(const AnimationOptions& o, int slices) {
   auto nonNegative = [](double v, const char* option) {
     if (!(v >= 0.0) || !std::isfinite(v)) throw InputError(option, "must be a non-negative number");
   };
-  if (slices < 2 || slices > 1000) throw InputError("--slices", "must be between 2 and 1000");
+  if (slices < 2 || slices > limits::kMaxSlices)
+    throw InputError("--slices", "must be between 2 and " + std::to_string(limits::kMaxSlices));
   if (!(o.elementArea >= 0.0 && o.elementArea <= 1.0)) throw InputError("--element-area", "must be in [0, 1]");
   positive(o.gap, "--gap");
   nonNegative(o.meshSpacing, "--mesh-spacing");

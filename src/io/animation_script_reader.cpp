@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "pak/error.hpp"
+#include "pak/limits.hpp"
 #include "pak/io/json_syntax_error.hpp"
 #include "pak/io/text_file.hpp"
 
@@ -21,17 +22,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using Json = nlohmann::ordered_json;  // file order, so the first typo reported is the first written
-
-constexpr int kMaxSlices = 1000;
-constexpr int kMaxFrames = 10000;
-constexpr int kMaxCount = 10000;
-// Bounds on the numbers of a script, far beyond any animation but small enough that the
-// geometry built from them stays finite and the simulation's grids stay small: a rotation of
-// 1e308 degrees has no meaningful angle, and a translation of 1e9 leaves every container.
-constexpr double kMaxDegrees = 36000.0;   // a hundred turns over one loop
-constexpr double kMaxScale = 1000.0;
-constexpr double kMaxCoordinate = 1e6;     // translations, handles and targets, in file units
-constexpr double kMaxDuration = 86400.0;   // one day per loop
 
 class Reader {
  public:
@@ -121,8 +111,8 @@ class Reader {
   std::vector<PointKey> pointKeys(const Json& value, const std::string& path, const char* xName, const char* yName) const {
     return keys<PointKey>(value, path, [&](const Json& key, const std::string& at, double t) {
       checkKeys(key, at, {"t", xName, yName});
-      return PointKey{t, {bounded(member(key, at, xName), at + "." + xName, kMaxCoordinate),
-                          bounded(member(key, at, yName), at + "." + yName, kMaxCoordinate)}};
+      return PointKey{t, {bounded(member(key, at, xName), at + "." + xName, limits::kMaxAnimationCoordinate),
+                          bounded(member(key, at, yName), at + "." + yName, limits::kMaxAnimationCoordinate)}};
     });
   }
 
@@ -131,13 +121,13 @@ class Reader {
       checkKeys(key, at, {"t", "x", "y", "scale", "rotation"});
       GuideTarget target;
       target.t = t;
-      target.position = {bounded(member(key, at, "x"), at + ".x", kMaxCoordinate),
-                         bounded(member(key, at, "y"), at + ".y", kMaxCoordinate)};
+      target.position = {bounded(member(key, at, "x"), at + ".x", limits::kMaxAnimationCoordinate),
+                         bounded(member(key, at, "y"), at + ".y", limits::kMaxAnimationCoordinate)};
       if (key.contains("scale")) {
-        target.scale = bounded(key["scale"], at + ".scale", kMaxScale);
+        target.scale = bounded(key["scale"], at + ".scale", limits::kMaxAnimationScale);
         if (*target.scale <= 0.0) fail(at + ".scale", "must be positive");
       }
-      if (key.contains("rotation")) target.rotation = bounded(key["rotation"], at + ".rotation", kMaxDegrees);
+      if (key.contains("rotation")) target.rotation = bounded(key["rotation"], at + ".rotation", limits::kMaxDegrees);
       return target;
     });
     if (result.size() < 2) fail(path, "a guided element needs at least two targets");
@@ -162,10 +152,10 @@ class Reader {
     const fs::path file(svg);
     spec.svg = file.is_absolute() || folder.empty() ? svg : (fs::path(folder) / file).lexically_normal().string();
 
-    if (value.contains("count")) spec.count = integer(value["count"], path + ".count", 1, kMaxCount);
+    if (value.contains("count")) spec.count = integer(value["count"], path + ".count", 1, limits::kMaxElementCopies);
     if (value.contains("rotation"))
-      spec.animation.rotation = scalarKeys(value["rotation"], path + ".rotation", false, kMaxDegrees);
-    if (value.contains("scale")) spec.animation.scale = scalarKeys(value["scale"], path + ".scale", true, kMaxScale);
+      spec.animation.rotation = scalarKeys(value["rotation"], path + ".rotation", false, limits::kMaxDegrees);
+    if (value.contains("scale")) spec.animation.scale = scalarKeys(value["scale"], path + ".scale", true, limits::kMaxAnimationScale);
     if (value.contains("translation"))
       spec.animation.translation = pointKeys(value["translation"], path + ".translation", "x", "y");
     if (value.contains("handles")) {
@@ -185,7 +175,7 @@ class Reader {
         spec.orientation = std::nullopt;
         spec.orientationFromField = kind == "field";
       } else if (orientation.is_number()) {
-        spec.orientation = bounded(orientation, path + ".orientation", kMaxDegrees);
+        spec.orientation = bounded(orientation, path + ".orientation", limits::kMaxDegrees);
       } else {
         fail(path + ".orientation", "must be a number (degrees), \"random\" or \"field\"");
       }
@@ -220,14 +210,14 @@ class Reader {
 
     AnimationScript script;
     script.source = where_;
-    if (root.contains("slices")) script.slices = integer(root["slices"], "slices", 2, kMaxSlices);
-    if (root.contains("frames")) script.frames = integer(root["frames"], "frames", 1, kMaxFrames);
+    if (root.contains("slices")) script.slices = integer(root["slices"], "slices", 2, limits::kMaxSlices);
+    if (root.contains("frames")) script.frames = integer(root["frames"], "frames", 1, limits::kMaxFrames);
     if (root.contains("loop")) {
       if (!root["loop"].is_boolean()) fail("loop", "must be true or false");
       script.loop = root["loop"].get<bool>();
     }
     if (root.contains("duration")) {
-      script.duration = bounded(root["duration"], "duration", kMaxDuration);
+      script.duration = bounded(root["duration"], "duration", limits::kMaxLoopSeconds);
       if (script.duration <= 0.0) fail("duration", "must be positive (seconds)");
     }
     const Json& elements = member(root, "", "elements");

@@ -261,6 +261,9 @@ struct ReaderState {
   std::vector<FixedLayerSource> fixedLayers;
   int currentTopGroup = -1;  // of the element being read: what its warnings are about
   std::set<std::string> ids;  // of every element: a paint server that is not among them is missing
+  // Attribute values whose non-ASCII bytes became '?' for SVG++ (asciiForSvgpp), as written.
+  struct AsciiFolded { const char* begin; std::size_t size; std::string written; };
+  std::vector<AsciiFolded> asciiFolded;
 
   void warn(const std::string& where, const std::string& message) {
     document->warnings.push_back({file + (where.empty() ? "" : ": " + where), message, currentTopGroup});
@@ -269,6 +272,14 @@ struct ReaderState {
   std::string placeOf(const XmlNode* node, const std::string& element) const {
     const int line = lines ? lines->lineOf(node) : 0;
     return file + (line > 0 ? ":" + std::to_string(line) : "") + ": " + element;
+  }
+  // The text of [begin, begin + size) in an attribute value as the file wrote it, so that a
+  // message quotes "réd", not the "r??d" SVG++ was given.
+  std::string asWritten(const char* begin, std::size_t size) const {
+    for (const AsciiFolded& folded : asciiFolded)
+      if (begin >= folded.begin && begin + size <= folded.begin + folded.size)
+        return folded.written.substr(static_cast<std::size_t>(begin - folded.begin), size);
+    return std::string(begin, size);
   }
 };
 
@@ -352,6 +363,7 @@ struct ErrorPolicy {
   static bool parse_failed(const Context& context, AttributeTag, const Value& value) {
     const std::string name = svgpp::attribute_name<char>::get<AttributeTag>();
     std::string text = toString(value);
+    if (currentReader && !text.empty()) text = currentReader->asWritten(&*boost::begin(value), text.size());
     if (text.size() > 80) text = text.substr(0, 77) + "...";
     const std::string where =
         currentReader ? currentReader->currentElement : std::string("<svg>");
@@ -1147,6 +1159,19 @@ void flattenCubic(Vec2 p0, Vec2 p1, Vec2 p2, Vec2 p3, double tolerance, std::vec
   out.push_back(p3);
 }
 
+// The larger side of the box of subpaths' points and control points.
+double curveExtent(const std::vector<CurveSubpath>& subpaths) {
+  Box box;
+  for (const CurveSubpath& subpath : subpaths) {
+    box.add(subpath.start);
+    for (const CurveSegment& segment : subpath.segments) {
+      box.add(segment.end);
+      if (segment.cubic) box.add(segment.control1), box.add(segment.control2);
+    }
+  }
+  return box.empty() ? 0.0 : std::max(box.width(), box.height());
+}
+
 Subpath flatten(const CurveSubpath& curves, double tolerance) {
   std::vector<Vec2> points{curves.start};
   for (const CurveSegment& segment : curves.segments) {
@@ -1407,13 +1432,17 @@ bool parsedBySvgpp(const rapidxml_ns::xml_attribute<char>* a) {
 
 // Non-ASCII bytes in the values SVG++ parses become '?', in place: such a value (a colour
 // "réd", a length "1０") is not valid SVG, so it is then skipped with a warning like any other
-// unreadable value. The source text, which layers are copied from, keeps the bytes as written.
-void asciiForSvgpp(XmlNode* root) {
-  forEachElement(root, [](XmlNode* node) {
+// unreadable value. The source text, which layers are copied from, keeps the bytes as written,
+// and so does `folded`, which messages quote.
+void asciiForSvgpp(XmlNode* root, std::vector<ReaderState::AsciiFolded>& folded) {
+  forEachElement(root, [&](XmlNode* node) {
     for (auto* a = node->first_attribute(); a; a = a->next_attribute()) {
       if (!parsedBySvgpp(a)) continue;
       char* value = a->value();
-      for (std::size_t i = 0; i < a->value_size(); ++i)
+      const std::size_t size = a->value_size();
+      if (std::none_of(value, value + size, [](char c) { return static_cast<unsigned char>(c) >= 0x80; })) continue;
+      folded.push_back({value, size, std::string(value, size)});
+      for (std::size_t i = 0; i < size; ++i)
         if (static_cast<unsigned char>(value[i]) >= 0x80) value[i] = '?';
     }
   });
@@ -1993,7 +2022,7 @@ SvgDocument readSvgString(const std::string& input, const std::string& name, con
   if (nestingDepth(root) > kMaxXmlNesting)
     throw InputError(name, "elements nested more than " + std::to_string(kMaxXmlNesting) +
                                " deep once <use> copies are expanded");
-  asciiForSvgpp(root);
+  asciiForSvgpp(root, state.asciiFolded);
   forEachElement(root, [&](XmlNode* node) {
     if (std::string id = attributeOf(node, "id"); !id.empty()) state.ids.insert(std::move(id));
   });
@@ -2047,6 +2076,11 @@ SvgDocument readSvgString(const std::string& input, const std::string& name, con
 
   for (PendingShape& pending : state.shapes) {
     state.currentTopGroup = pending.shape.topGroup;
+    // A shape far larger than the document (sheared by skewX(89.9999), say) is flattened
+    // relative to its own size: per the document's, its curves would make thousands of
+    // almost collinear points, on which the boolean operations take minutes. (Clip paths and
+    // strokes keep the document's tolerance, and with it the clipping precision.)
+    const double flattening = std::max(tolerance, options.flatness * curveExtent(pending.subpaths));
     SvgShape shape = std::move(pending.shape);
     // A zero-length subpath (`M4 20h0`, a dot in outline icons) is painted by round and
     // square caps; it is kept as one point.
@@ -2055,7 +2089,7 @@ SvgDocument readSvgString(const std::string& input, const std::string& name, con
     for (const CurveSubpath& curves : pending.subpaths) {
       shape.drawnPoints += 1;
       for (const CurveSegment& segment : curves.segments) shape.drawnPoints += segment.cubic ? 3 : 1;
-      Subpath subpath = flatten(curves, tolerance);
+      Subpath subpath = flatten(curves, flattening);
       const bool dot = dots && subpath.points.size() == 1 && (!curves.segments.empty() || curves.closed);
       if (dot) subpath.closed = false;
       if (subpath.points.size() >= 2 || dot) shape.subpaths.push_back(std::move(subpath));

@@ -95,23 +95,43 @@ double RegionIndex::insideDistanceBound(Vec2 p) const {
   return std::max(0, r - 1) * cell_;
 }
 
+// A point off the grid: the rings around its nearest cell would have to grow with the
+// square root of its distance before their bound passed the best found, because far away
+// many cells are almost equally near. Instead, visit the cells column by column away from
+// p's nearest column and, in each, row by row away from its nearest row, skipping the rest of
+// a column (or of the columns) once the cell's own distance from p is no nearer than the best.
+// Far off, those cells form a band along the grid's near side, so the cost is bounded by the
+// grid's size whatever the distance.
+template <typename VisitCell>
+void RegionIndex::closestFromOffGrid(Vec2 p, VisitCell&& visitCell, const double& best) const {
+  auto nearest = [&](double offset, int n) {
+    return static_cast<int>(std::clamp(std::floor(offset / cell_), 0.0, double(n - 1)));
+  };
+  const int ci = nearest(p.x - origin_.x, nx_), cj = nearest(p.y - origin_.y, ny_);
+  // Distance along one axis from p to the interval of column (row) k.
+  auto gap = [&](double coordinate, double start, int k) {
+    const double lo = start + k * cell_, hi = lo + cell_;
+    return coordinate < lo ? lo - coordinate : (coordinate > hi ? coordinate - hi : 0.0);
+  };
+  auto scanColumn = [&](int i) {
+    const double dx = gap(p.x, origin_.x, i);
+    if (dx * dx >= best) return false;
+    for (int step : {-1, 1})
+      for (int j = step < 0 ? cj : cj + 1; j >= 0 && j < ny_; j += step) {
+        const double dy = gap(p.y, origin_.y, j);
+        if (dx * dx + dy * dy >= best) break;
+        visitCell(i, j);
+      }
+    return true;
+  };
+  scanColumn(ci);
+  for (int i = ci - 1; i >= 0 && scanColumn(i); --i) {}
+  for (int i = ci + 1; i < nx_ && scanColumn(i); ++i) {}
+}
+
 RegionIndex::Query RegionIndex::closestAround(Vec2 p) const {
   // A non-finite point has no closest boundary; the step's assertion reports it.
   if (!std::isfinite(p.x) || !std::isfinite(p.y)) return Query{};
-  // Start from the grid cell nearest p, so a point far outside costs no more than one inside:
-  // every cell r rings away from it is still at least r - 1 cells from p.
-  auto cellOf = [&](double offset, int n) {
-    return static_cast<int>(std::clamp(std::floor(offset / cell_), 0.0, double(n - 1)));
-  };
-  int ci = cellOf(p.x - origin_.x, nx_);
-  int cj = cellOf(p.y - origin_.y, ny_);
-  // p's distance to the grid (0 inside): every cell is at least that far from p, in a
-  // direction orthogonal to the ring distance below, so a far point stops as soon as a
-  // near point would, whatever the distance (p minus its projection on the grid box is
-  // orthogonal to every vector inside the box).
-  const Vec2 gridMax = origin_ + Vec2{nx_ * cell_, ny_ * cell_};
-  const Vec2 onGrid{std::clamp(p.x, origin_.x, gridMax.x), std::clamp(p.y, origin_.y, gridMax.y)};
-  const double offGridSquared = lengthSquared(p - onGrid);
   double best = std::numeric_limits<double>::infinity();
   int bestSegment = -1;
   double bestT = 0.0;
@@ -122,22 +142,30 @@ RegionIndex::Query RegionIndex::closestAround(Vec2 p) const {
     double d = lengthSquared(p - q);
     if (d < best) { best = d; bestSegment = s; bestT = t; bestPoint = q; }
   };
-  // Rings of cells around p; once the best distance is within the ring's inner radius, stop.
-  int maxRing = std::max(nx_, ny_) + 1;
-  for (int r = 0; r <= maxRing; ++r) {
-    for (int j = cj - r; j <= cj + r; ++j) {
-      if (j < 0 || j >= ny_) continue;
-      bool edgeRow = (j == cj - r || j == cj + r);
-      for (int i = ci - r; i <= ci + r; i += (edgeRow ? 1 : 2 * r)) {
-        if (i >= 0 && i < nx_) {
-          int c = cellIndex(i, j);
-          for (int k = cellStart_[c]; k < cellStart_[c + 1]; ++k) consider(entries_[k]);
+  auto visitCell = [&](int i, int j) {
+    const int c = cellIndex(i, j);
+    for (int k = cellStart_[c]; k < cellStart_[c + 1]; ++k) consider(entries_[k]);
+  };
+  const Vec2 gridMax = origin_ + Vec2{nx_ * cell_, ny_ * cell_};
+  if (p.x < origin_.x || p.y < origin_.y || p.x > gridMax.x || p.y > gridMax.y) {
+    closestFromOffGrid(p, visitCell, best);
+  } else {
+    // Rings of cells around p's cell; once the best distance is within the ring's inner
+    // radius, stop.
+    const int ci = std::min(nx_ - 1, static_cast<int>((p.x - origin_.x) / cell_));
+    const int cj = std::min(ny_ - 1, static_cast<int>((p.y - origin_.y) / cell_));
+    const int maxRing = std::max(nx_, ny_) + 1;
+    for (int r = 0; r <= maxRing; ++r) {
+      for (int j = cj - r; j <= cj + r; ++j) {
+        if (j < 0 || j >= ny_) continue;
+        bool edgeRow = (j == cj - r || j == cj + r);
+        for (int i = ci - r; i <= ci + r; i += (edgeRow ? 1 : 2 * r)) {
+          if (i >= 0 && i < nx_) visitCell(i, j);
+          if (r == 0) break;
         }
-        if (r == 0) break;
       }
+      if (bestSegment >= 0 && std::sqrt(best) <= r * cell_) break;
     }
-    // Every cell beyond ring r is at least r cells from p's cell, plus the distance off the grid.
-    if (bestSegment >= 0 && std::sqrt(best) <= std::sqrt(offGridSquared + (r * cell_) * (r * cell_))) break;
   }
   Query q;
   if (bestSegment < 0) return q;

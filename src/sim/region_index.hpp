@@ -33,6 +33,8 @@ class RegionIndex {
  private:
   struct Segment { Vec2 a, b; Vec2 normal; Vec2 normalA, normalB; };  // outward normals
   Query closestAround(Vec2 p) const;
+  template <typename VisitCell>
+  void closestFromOffGrid(Vec2 p, VisitCell&& visitCell, const double& best) const;
   int cellIndex(int i, int j) const { return j * nx_ + i; }
 
   std::vector<Segment> segments_;

@@ -74,6 +74,28 @@ TEST(RegionIndex, FarOutsidePointsFindTheirClosestBoundaryPoint) {
   }
 }
 
+TEST(RegionIndex, FarPointsAroundAStarFindTheExactNearestBoundary) {
+  // A non-convex ring: far off, many of its points are almost equally near, and the search
+  // off the grid (a band along the grid's near side) must still find the nearest exactly.
+  Polygon star;
+  for (int k = 0; k < 14; ++k) {
+    const double angle = k * 3.14159265358979 / 7, radius = k % 2 ? 20.0 : 50.0;
+    star.outer.push_back({50 + radius * std::cos(angle), 50 + radius * std::sin(angle)});
+  }
+  const Region region{star};
+  RegionIndex index(region, 1.5);
+  Rng rng(3);
+  for (int i = 0; i < 3000; ++i) {
+    const double angle = rng.uniform(0, 6.283185307179586), distance = std::pow(10.0, rng.uniform(1, 7));  // some inside
+    const Vec2 p{50 + distance * std::cos(angle), 50 + distance * std::sin(angle)};
+    const RegionIndex::Query q = index.query(p, true);
+    ASSERT_TRUE(q.computed);
+    const double exact = closestPointOnBoundary(p, region).distance;
+    EXPECT_NEAR(q.distance, exact, 1e-12 * exact) << p.x << "," << p.y;
+    EXPECT_EQ(q.inside, pointInRegion(p, region)) << p.x << "," << p.y;
+  }
+}
+
 TEST(RegionIndex, NonFinitePointHasNoClosestBoundary) {
   RegionIndex index(squareWithHole(), 7.0);
   EXPECT_FALSE(index.query({std::nan(""), 3}, true).computed);
