@@ -41,22 +41,39 @@ inline std::string readWholeFile(const std::filesystem::path& path) {
   return buffer.str();
 }
 
-// `arguments` are already quoted where needed (use shellQuoted for paths).
+// Where one run's stdout and stderr go (temporary files, unique per process and run), the
+// shell command that sends them there, and collecting them once the run has ended.
+class CapturedRun {
+ public:
+  explicit CapturedRun(const std::string& kind) {
+    static std::atomic<int> counter{0};
+    const auto stem = std::filesystem::temp_directory_path() /
+                      ("pak-" + kind + "-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
+    outPath_ = stem.string() + ".out", errPath_ = stem.string() + ".err";
+  }
+  // Runs from the source tree, so relative paths like examples/scene.svg work as in the
+  // README. `arguments` are already quoted where needed (use shellQuoted for paths).
+  std::string command(const std::string& arguments) const {
+    return "cd " + shellQuoted(PAK_SOURCE_DIR) + " && exec " + shellQuoted(PAK_BINARY) + " " + arguments + " >" +
+           shellQuoted(outPath_) + " 2>" + shellQuoted(errPath_) + " </dev/null";
+  }
+  // `status` as wait() gives it: a signal is reported as 128 + its number, as the shell does.
+  void collect(int status, PakRun& run) const {
+    run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+    run.out = readWholeFile(outPath_);
+    run.err = readWholeFile(errPath_);
+    std::filesystem::remove(outPath_);
+    std::filesystem::remove(errPath_);
+  }
+
+ private:
+  std::string outPath_, errPath_;
+};
+
 inline PakRun runPak(const std::string& arguments) {
-  static std::atomic<int> counter{0};
-  auto stem = std::filesystem::temp_directory_path() /
-              ("pak-cli-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
-  std::string outPath = stem.string() + ".out", errPath = stem.string() + ".err";
-  // Run from the source tree so relative paths like examples/scene.svg work as in the README.
-  std::string command = "cd " + shellQuoted(PAK_SOURCE_DIR) + " && " + shellQuoted(PAK_BINARY) + " " + arguments +
-                        " >" + shellQuoted(outPath) + " 2>" + shellQuoted(errPath) + " </dev/null";
-  int status = std::system(command.c_str());
+  const CapturedRun captured("cli");
   PakRun run;
-  run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
-  run.out = readWholeFile(outPath);
-  run.err = readWholeFile(errPath);
-  std::filesystem::remove(outPath);
-  std::filesystem::remove(errPath);
+  captured.collect(std::system(captured.command(arguments).c_str()), run);
   return run;
 }
 

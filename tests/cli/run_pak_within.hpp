@@ -7,7 +7,6 @@
 #include <unistd.h>
 
 #include <chrono>
-#include <filesystem>
 #include <string>
 #include <thread>
 
@@ -21,12 +20,8 @@ struct WatchedRun : PakRun {
 };
 
 inline WatchedRun runPakWithin(const std::string& arguments, double seconds) {
-  static int counter = 0;
-  const auto stem = std::filesystem::temp_directory_path() /
-                    ("pak-watched-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
-  const std::string outPath = stem.string() + ".out", errPath = stem.string() + ".err";
-  const std::string command = "cd " + shellQuoted(PAK_SOURCE_DIR) + " && exec " + shellQuoted(PAK_BINARY) + " " +
-                              arguments + " >" + shellQuoted(outPath) + " 2>" + shellQuoted(errPath) + " </dev/null";
+  const CapturedRun captured("watched");
+  const std::string command = captured.command(arguments);
   WatchedRun run;
   const auto start = std::chrono::steady_clock::now();
   const pid_t child = ::fork();
@@ -49,11 +44,7 @@ inline WatchedRun runPakWithin(const std::string& arguments, double seconds) {
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
-  run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
-  run.out = readWholeFile(outPath);
-  run.err = readWholeFile(errPath);
-  std::filesystem::remove(outPath);
-  std::filesystem::remove(errPath);
+  captured.collect(status, run);
   return run;
 }
 
