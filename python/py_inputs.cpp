@@ -57,9 +57,15 @@ SvgDocument documentOf(const std::vector<std::vector<Ring>>& items, const std::v
   const std::string w = number(std::max(x1 - x0, 1e-9)), h = number(std::max(y1 - y0, 1e-9));
   std::string svg = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + w + "\" height=\"" + h + "\" viewBox=\"" +
                     number(x0) + " " + number(y0) + " " + w + " " + h + "\">\n";
+  // A container layer is drawn as styled: an outline as the packers draw a container without
+  // one, 1.5 canonical units wide (the container's larger side is 1000).
+  const std::string paint = guides.empty() ? std::string()
+                                           : "fill=\"none\" stroke=\"#000000\" stroke-width=\"" +
+                                                 number(1.5e-3 * std::max(x1 - x0, y1 - y0)) + "\" ";
   if (!guides.empty()) svg += "<g id=\"container\">\n";
   for (std::size_t i = 0; i < items.size(); ++i)
-    svg += "<path fill-rule=\"evenodd\" fill=\"" + fills[i] + "\" d=\"" + pathData(items[i]) + "\"/>\n";
+    svg += "<path fill-rule=\"evenodd\" " + (paint.empty() ? "fill=\"" + fills[i] + "\" " : paint) + "d=\"" +
+           pathData(items[i]) + "\"/>\n";
   if (!guides.empty())
     svg += "</g>\n<g id=\"guides\">\n<path fill=\"none\" stroke=\"#000000\" d=\"" + lineData(guides) + "\"/>\n</g>\n";
   return readSvgString(svg + "</svg>\n", name);
