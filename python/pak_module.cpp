@@ -79,8 +79,10 @@ PYBIND11_MODULE(pak, m) {
         py::arg("secondary") = py::none(), py::arg("progress") = py::none(), py::arg("progress_every") = 50,
         R"(Packs `elements` into `container` (RepulsionPak), as `pak pack` does.
 
-container: a path, a pak.Scene, or rings (an (N, 2) array or a list of them); None with tile="W,H".
-elements: a path or list of paths (files, folders), a pak.Elements, or a list of elements as rings.
+container: a path, a pak.Scene, rings (an (N, 2) array or a list of them) or a shapely
+(Multi)Polygon; None with tile="W,H".
+elements: a path or list of paths (files, folders), a pak.Elements, or a list of elements as rings
+or shapely geometries.
 options: `pak pack`'s options by the same names, '-' written '_' (seed=3, max_iterations=500,
 threads=2, gap="2mm", preset="rigid"), read as a --config file is.
 progress: called with a dict (iteration, fill, growing, ...) every progress_every iterations;
