@@ -81,23 +81,19 @@ py::object metrics(const py::object& packings, const py::object& report, const p
     sources.push_back(sourceOf(packings));
   if (sources.empty()) throw InputError("pak.metrics", "no packing given");
 
-  // --report: a dict or a file; else the (first) result's own.
-  nlohmann::json reportJson;
-  std::string reportName = "report";
-  const nlohmann::json* gapReport = nullptr;
-  if (isPath(report)) {
-    reportName = py::cast<std::string>(py::module_::import("os").attr("fspath")(report));
-    reportJson = cli::readReportFile(reportName);
-    gapReport = &reportJson;
-  } else if (!report.is_none()) {
-    reportJson = nlohmann::json::parse(py::cast<std::string>(py::module_::import("json").attr("dumps")(report)));
-    gapReport = &reportJson;
-  } else {
-    const py::object first = many ? py::object(packings[py::int_(0)]) : packings;
-    gapReport = reportOf(first);
-    reportName = "the result's report";
+  // A gap given wins over the report's: --report's (a dict or a file), else the (first)
+  // result's own.
+  if (!cli::resolveMetricsOptions(args, command, &config, "pak.metrics")) {
+    if (isPath(report)) {
+      const std::string file = py::cast<std::string>(py::module_::import("os").attr("fspath")(report));
+      args.metrics.gap = cli::gapFromReport(cli::readReportFile(file), file);
+    } else if (!report.is_none()) {
+      const std::string text = py::cast<std::string>(py::module_::import("json").attr("dumps")(report));
+      args.metrics.gap = cli::gapFromReport(nlohmann::json::parse(text), "report");
+    } else if (const nlohmann::json* own = reportOf(many ? py::object(packings[py::int_(0)]) : packings)) {
+      args.metrics.gap = cli::gapFromReport(*own, "the result's report");
+    }
   }
-  cli::resolveMetricsOptions(args, command, &config, "pak.metrics", gapReport, reportName);
 
   std::vector<nlohmann::json> measured;
   {

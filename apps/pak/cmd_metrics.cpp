@@ -187,11 +187,11 @@ int runMetrics(MetricsArguments& args, const CLI::App& command) {
   inputs.push_back(args.config);
   checkOutputsBeforeTheRun(outputs, inputs);
 
-  nlohmann::json config, report;
+  nlohmann::json config;
   if (!args.config.empty()) config = readConfigObject(args.config);
-  if (!args.report.empty()) report = readReportFile(args.report);
-  resolveMetricsOptions(args, command, args.config.empty() ? nullptr : &config, args.config,
-                        args.report.empty() ? nullptr : &report, args.report);
+  const bool gapGiven = resolveMetricsOptions(args, command, args.config.empty() ? nullptr : &config, args.config);
+  // A gap given wins over the report's, which is not read then.
+  if (!gapGiven && !args.report.empty()) args.metrics.gap = gapFromReport(readReportFile(args.report), args.report);
 
   std::vector<PackingGeometry> packings;
   for (const std::string& file : args.files) packings.push_back(readPacking(file, args.layers));

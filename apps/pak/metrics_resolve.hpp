@@ -11,9 +11,9 @@
 namespace pak::cli {
 
 // `command` holds metricsOptions() (what it gave wins over `config`); `config`, when not
-// null, is a --config object, its errors naming `configName`. `report`, when not null and
-// no gap was given, is the Pak report d_gap is read from (errors naming `reportName`).
-void resolveMetricsOptions(MetricsArguments& args, const CLI::App& command, const nlohmann::json* config,
-                           const std::string& configName, const nlohmann::json* report, const std::string& reportName);
+// null, is a --config object, its errors naming `configName`. Returns whether the command
+// or the config gave the gap (even 0, "estimate it"): else a report's d_gap is used.
+bool resolveMetricsOptions(MetricsArguments& args, const CLI::App& command, const nlohmann::json* config,
+                           const std::string& configName);
 
 }  // namespace pak::cli
