@@ -25,15 +25,19 @@ struct ElementsInput {
 
 SceneInput readScene(const std::string& path, const std::string& containerLayer = "container");
 ElementsInput readElements(const std::vector<std::string>& paths);
-// A container from rings: an (N, 2) array or a list of them, holes by the even-odd rule.
-SceneInput sceneFromRings(const py::handle& rings);
-// One element per item: an (N, 2) array or a list of rings (even-odd), filled with `colors[i]`
-// (any SVG colour) or a default blue.
+// A container from rings: an (N, 2) array or a list of them, holes by the even-odd rule, or
+// a shapely (Multi)Polygon; `guides` (None, or lines: py_arrays.hpp) make it a flow scene.
+SceneInput sceneFromRings(const py::handle& rings, const py::handle& guides = py::none());
+// One element per item: an (N, 2) array, a list of rings (even-odd) or a shapely
+// (Multi)Polygon, filled with `colors[i]` (any SVG colour) or a default blue. One geometry
+// alone is one element.
 ElementsInput elementsFromRings(const py::handle& items, const std::vector<std::string>& colors = {});
 
-// pak.pack's arguments as given: paths (str or os.PathLike), a SceneInput / ElementsInput, or
-// rings. `containerLayer` applies to a scene read here.
-SceneInput sceneArgument(const py::handle& container, const std::string& containerLayer);
+// The packers' arguments as given: paths (str or os.PathLike), a SceneInput / ElementsInput,
+// rings or shapely geometries. `containerLayer` applies to a scene read here; `guides` to one
+// made from rings.
+SceneInput sceneArgument(const py::handle& container, const std::string& containerLayer,
+                         const py::handle& guides = py::none());
 ElementsInput elementsArgument(const py::handle& elements);
 
 }  // namespace pak::python

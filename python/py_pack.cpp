@@ -1,8 +1,7 @@
 #include "py_pack.hpp"
 
-#include <atomic>
+#include <algorithm>
 #include <chrono>
-#include <optional>
 
 #include <CLI/CLI.hpp>
 
@@ -18,6 +17,7 @@
 #include "pak/sim/canonical_units.hpp"
 #include "py_inputs.hpp"
 #include "py_options.hpp"
+#include "py_progress.hpp"
 
 namespace pak::python {
 
@@ -53,28 +53,17 @@ PackResult pack(const py::object& container, const py::object& elements, const p
   args.elements = primaries.paths;
   args.secondary = secondaries.paths;
 
-  // The callback runs on the packer's thread, which holds no GIL. It also lets Python handle
-  // its signals, so that Ctrl-C (KeyboardInterrupt) stops a run; either's exception stops the
-  // run as a time limit would, and is raised once it has.
-  std::atomic<bool> stop{false};
-  std::optional<py::error_already_set> raised;
+  ProgressHook hook(progress);
   RepulsionCallbacks callbacks;
   callbacks.progressEvery = std::max(1, progressEvery);
   callbacks.onProgress = [&](const RepulsionProgress& p) {
-    py::gil_scoped_acquire gil;
-    if (raised) return;
-    try {
-      if (PyErr_CheckSignals() != 0) throw py::error_already_set();
-      if (!progress.is_none())
-        progress(py::dict("iteration"_a = p.iteration, "fill"_a = p.fill, "growing"_a = p.growing,
-                          "elements"_a = p.elements, "touching_neighbours"_a = p.touchingNeighbours,
-                          "against_wall"_a = p.againstWall));
-    } catch (py::error_already_set& e) {
-      raised = std::move(e);
-      stop = true;
-    }
+    hook([&] {
+      return py::dict("iteration"_a = p.iteration, "fill"_a = p.fill, "growing"_a = p.growing,
+                      "elements"_a = p.elements, "touching_neighbours"_a = p.touchingNeighbours,
+                      "against_wall"_a = p.againstWall);
+    });
   };
-  args.options.run.stopRequest = &stop;
+  args.options.run.stopRequest = hook.stopRequest();
 
   PackResult result;
   {
@@ -93,7 +82,7 @@ PackResult pack(const py::object& container, const py::object& elements, const p
     times.wall = std::chrono::duration<double>(Clock::now() - start).count();
     result.report = cli::packReport(args, scene, result.packing, audit, times, paths);
   }
-  if (raised) throw std::move(*raised);
+  hook.rethrow();
   return result;
 }
 

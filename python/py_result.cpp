@@ -11,9 +11,12 @@
 namespace pak::python {
 namespace {
 
-// "#rrggbb" of what the element paints first (its first fill, else stroke); None if nothing.
-py::object colorOf(const PlacedElement& element) {
-  for (const Shape& shape : element.art)
+py::bytes png(const PackResult& result, int width) { return pngBytes(result.drawing, width); }
+
+}  // namespace
+
+py::object colorOf(const std::vector<Shape>& art) {
+  for (const Shape& shape : art)
     if (const std::optional<Color>& c = shape.fill ? shape.fill : shape.stroke) {
       char text[8];
       std::snprintf(text, sizeof text, "#%02x%02x%02x", c->r, c->g, c->b);
@@ -22,18 +25,20 @@ py::object colorOf(const PlacedElement& element) {
   return py::none();
 }
 
-py::bytes png(const PackResult& result, int width) {
+py::bytes pngBytes(const Drawing& drawing, int width) {
   PngOptions options;
   options.width = width;
   std::string bytes;
   {
     py::gil_scoped_release release;
-    bytes = renderPng(result.drawing, options, "to_png");
+    bytes = renderPng(drawing, options, "to_png");
   }
   return py::bytes(bytes);
 }
 
-}  // namespace
+void saveText(const py::object& path, const std::string& text) {
+  writeFileAtomically(py::cast<std::string>(py::module_::import("os").attr("fspath")(path)), text);
+}
 
 py::list ringArrays(const Region& region) {
   py::list rings;
@@ -66,7 +71,7 @@ void bindPackResult(py::module_& m) {
           "colors",
           [](const PackResult& r) {
             py::list all;
-            for (const PlacedElement& e : r.packing.elements) all.append(colorOf(e));
+            for (const PlacedElement& e : r.packing.elements) all.append(colorOf(e.art));
             return all;
           },
           "each placed element's colour, '#rrggbb' (its first fill, else stroke), or None")
@@ -86,9 +91,7 @@ void bindPackResult(py::module_& m) {
       .def("to_svg", [](const PackResult& r) { return r.svg; }, "the SVG `pak pack -o` writes")
       .def(
           "save",
-          [](const PackResult& r, const py::object& path) {
-            writeFileAtomically(py::cast<std::string>(py::module_::import("os").attr("fspath")(path)), r.svg);
-          },
+          [](const PackResult& r, const py::object& path) { saveText(path, r.svg); },
           py::arg("path"), "writes to_svg() to `path`")
       .def("to_png", &png, py::arg("width") = 1200, "the PNG `pak pack --png` writes, as bytes")
       .def("_repr_png_", [](const PackResult& r) { return png(r, 800); })

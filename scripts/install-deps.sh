@@ -22,6 +22,7 @@ packages=(
   python3-lxml python3-cssselect python3-numpy  # imports these (only recommended by inkscape)
   python3-dev pybind11-dev  # the `pak` Python module (make python), built for Debian's python3
   python3-pytest        # its tests (tests/python, run by make test)
+  python3-shapely       # shapely geometries as the module's inputs, and their tests
 )
 
 # `make fuzz` (--fuzz): Debian's clang and its libFuzzer runtime; `make test` replays the

@@ -7,6 +7,8 @@
 
 #include "animate_arguments.hpp"
 #include "animate_report.hpp"
+#include "animate_resolve.hpp"
+#include "animate_frames.hpp"
 #include "art_check.hpp"
 #include "command.hpp"
 #include "input_warnings.hpp"
@@ -16,7 +18,6 @@
 #include "output_files.hpp"
 #include "run_eta.hpp"
 #include "pak/error.hpp"
-#include "pak/limits.hpp"
 #include "pak/io/output_batch.hpp"
 #include "pak/io/animation_checkpoint.hpp"
 #include "pak/io/animation_output.hpp"
@@ -48,29 +49,13 @@ std::uint64_t runFingerprint(const AnimateArguments& args, const Library& librar
   return h;
 }
 
-void checkOutputOptions(const AnimateArguments& args) {
-  if (args.common.every < 1) throw InputError("--every", "must be at least 1");
-  if (args.width < 16 || args.width > 8000) throw InputError("--width", "must be between 16 and 8000 pixels");
-  if (args.sheetFrames < 1 || args.sheetFrames > 100) throw InputError("--sheet-frames", "must be between 1 and 100");
-  using limits::kMaxFrames;
-  const std::string upTo = " and " + std::to_string(kMaxFrames);
-  if (args.svgKeyframes < 2 || args.svgKeyframes > kMaxFrames) throw InputError("--svg-keyframes", "must be between 2" + upTo);
-  if (args.frames < 0 || args.frames > kMaxFrames) throw InputError("--frames", "must be between 1" + upTo);
-  if (args.evennessFrames < 0 || args.evennessFrames > kMaxFrames) throw InputError("--evenness-frames", "must be between 0" + upTo);
-  if (!(args.pngAt >= 0.0 && args.pngAt <= 1.0)) throw InputError("--png-at", "must be a time t between 0 and 1");
-}
-
 int runAnimate(AnimateArguments& args, const CLI::App& command) {
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
   const CommonArguments& common = args.common;
-  if (!common.config.empty()) animateOptions().applyConfig(common.config, command, args, &args.common.lengths);
-  if (!args.mirror.empty()) {
-    const MirrorLine line = parseMirror(args.mirror);
-    if (!line.isVertical()) throw InputError("--mirror", "pak animate mirrors across a vertical line only: x=VALUE");
-    args.options.mirrorX = line.from.x;
-  }
-  checkOutputOptions(args);
+  nlohmann::json config;
+  if (!common.config.empty()) config = readConfigObject(common.config);
+  resolveAnimateOptions(args, command, common.config.empty() ? nullptr : &config, common.config);
   if (!args.video.empty()) checkVideoTarget(args.video);  // before the simulation, not after it
   if (command.count("--png-at") > 0 && common.png.empty()) throw InputError("--png-at", "needs --png FILE, the preview it times");
 
@@ -121,105 +106,45 @@ int runAnimate(AnimateArguments& args, const CLI::App& command) {
     callbacks.onCheckpoint = [&](const AnimationState& state) { writeAnimationCheckpoint(state, fingerprint, args.checkpoint); };
   }
 
-  // Frames at evenly spaced t (5.6); a loop's last frame would repeat the first.
-  const int frameCount = args.frames > 0 ? args.frames : script.frames;
-  // The frame separation checks at least every frame written (FrameSeparationOptions::samples).
-  AnimationOptions options = args.options;
+  const int frameCount = renderedFrameCount(args, script);
+  AnimationOptions options = animationRunOptions(args, script);
   options.run.stopRequest = &interruptRequest();
-  if (options.frameSeparation.samples == 0)
-    options.frameSeparation.samples = std::max(frameCount, 2 * (options.slices > 0 ? options.slices : script.slices));
   const AnimatedPacking animation =
       packAnimation(scene, library, script, options, callbacks, args.resume.empty() ? nullptr : &resumed);
   const auto simulated = Clock::now();
   OutputBatch outputs;  // every output, or none (and the output folder only if it was filled)
   createFolder(common.output);
 
-  auto frameTime = [&](int i, int count) {
-    return script.loop ? static_cast<double>(i) / count : (count > 1 ? static_cast<double>(i) / (count - 1) : 0.0);
-  };
-  // packAnimation separated the frames at its samples (an eased scale per element over t); a
-  // frame that still overlaps is separated on its own. `shrink`: the smallest scale the two
-  // together gave an element, and a guided one. `check`, when given, gets the frame's
-  // verifyPacking if the separation made it.
-  struct Shrink { double any = 1.0, guided = 1.0; };
-  auto frameAt = [&](double t, Shrink& shrink, std::optional<PackingCheck>* check = nullptr) {
-    Packing frame = animationFrame(animation, t);
-    std::vector<double> own;
-    separateFrame(frame, options.frameSeparation, &own, check);
-    shrink = {};
-    for (std::size_t e = 0; e < own.size(); ++e) {
-      // A loop's copies and a mirror's twins come after the elements; each names its own.
-      const auto source = static_cast<std::size_t>(frame.elements[e].libraryIndex);
-      const double scale = separationScaleAt(animation, source, t) * own[e];
-      shrink.any = std::min(shrink.any, scale);
-      if (frame.elements[e].guided) shrink.guided = std::min(shrink.guided, scale);
-    }
-    return frame;
-  };
-  auto drawingAt = [&](double t) {
-    Shrink shrink;
-    return packingDrawing(input.layout, frameAt(t, shrink));
-  };
-  AnimationOutputOptions output;
-  output.duration = script.duration;
-  output.loop = script.loop;
-  output.width = args.width;
-  output.svgCurveTolerance = outlineWriteOptions(args.polyline, kMeshCurveTolerance, animation.canonicalScale).curveTolerance;
-
-  // Each frame's packing once: it is drawn, and checked below.
-  std::vector<Packing> packings;
-  std::vector<Drawing> frames;
-  std::vector<std::optional<PackingCheck>> checks(static_cast<std::size_t>(frameCount));
-  packings.reserve(frameCount);
-  frames.reserve(frameCount);
-  int framesSeparated = 0;
-  Shrink smallest;
-  for (int i = 0; i < frameCount; ++i) {
-    Shrink shrink;
-    packings.push_back(frameAt(frameTime(i, frameCount), shrink, &checks[i]));
-    frames.push_back(packingDrawing(input.layout, packings.back()));
-    framesSeparated += shrink.any < 1.0 ? 1 : 0;
-    smallest.any = std::min(smallest.any, shrink.any);
-    smallest.guided = std::min(smallest.guided, shrink.guided);
-  }
+  const AnimationFrames render(animation, input.layout, script, options.frameSeparation);
+  const AnimationOutputOptions output = animationOutputOptions(args, script, animation);
+  const RenderedFrames rendered = renderFrames(render, frameCount);
+  const std::vector<Drawing>& frames = rendered.drawings;
   if (!args.noGif) writeGif(frames, (out / "animation.gif").string(), output);
   if (args.pngFrames) writePngFrames(frames, (out / "frames").string(), output);
   if (args.svgFrames) writeSvgFrames(frames, (out / "svg-frames").string(), output);
   if (!args.video.empty()) writeVideo(frames, args.video, output);
-  if (!common.png.empty()) writePngPreview(drawingAt(args.pngAt), common.png, args.width);
-  {
-    const int keys = std::min(args.svgKeyframes, frameCount);
-    std::vector<Drawing> keyframes;
-    for (int i = 0; i < keys; ++i) keyframes.push_back(drawingAt(frameTime(i, keys)));
-    writeAnimatedSvg(keyframes, (out / "animation.svg").string(), output);
-  }
+  if (!common.png.empty()) writePngPreview(render.drawingAt(args.pngAt), common.png, args.width);
+  writeAnimatedSvg(render.drawings(std::min(args.svgKeyframes, frameCount)), (out / "animation.svg").string(), output);
   {
     std::vector<Drawing> sheet;
     std::vector<std::string> captions;
     for (int i = 0; i < args.sheetFrames; ++i) {
-      const double t = frameTime(i, args.sheetFrames);
-      sheet.push_back(drawingAt(t));
+      const double t = render.time(i, args.sheetFrames);
+      sheet.push_back(render.drawingAt(t));
       char caption[32];
       std::snprintf(caption, sizeof caption, "t = %.3g", t);
       captions.push_back(caption);
     }
     writeContactSheet(sheet, captions, (out / "contact-sheet.png").string(), std::min(args.sheetFrames, 5), output);
   }
-  const auto rendered = Clock::now();
+  const auto renderedAt = Clock::now();
 
-  std::vector<double> times(static_cast<std::size_t>(frameCount));
-  for (int i = 0; i < frameCount; ++i) times[i] = frameTime(i, frameCount);
-  // The separation's checks are the audit's own when they used its tolerance.
-  if (options.frameSeparation.areaTolerance != kArtAreaTolerance) checks.assign(checks.size(), std::nullopt);
-  FrameAudit audit =
-      auditFrames(packings, checks, times, animation.container, common.report.empty() ? 0 : args.evennessFrames);
-  audit.framesSeparated = framesSeparated;
-  audit.smallestSeparationScale = smallest.any;
-  audit.smallestGuidedSeparationScale = smallest.guided;
+  const FrameAudit audit =
+      auditRenderedFrames(rendered, animation, options.frameSeparation, common.report.empty() ? 0 : args.evennessFrames);
   AnimateTimes seconds;
   seconds.wall = std::chrono::duration<double>(Clock::now() - start).count();
   seconds.simulation = std::chrono::duration<double>(simulated - start).count();
-  seconds.rendering = std::chrono::duration<double>(rendered - simulated).count();
+  seconds.rendering = std::chrono::duration<double>(renderedAt - simulated).count();
 
   if (!common.quiet)
     std::fprintf(stderr,

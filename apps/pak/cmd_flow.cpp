@@ -7,9 +7,9 @@
 #include "command.hpp"
 #include "flow_arguments.hpp"
 #include "flow_report.hpp"
+#include "flow_resolve.hpp"
 #include "input_warnings.hpp"
 #include "interrupt.hpp"
-#include "mirror_option.hpp"
 #include "outline_output.hpp"
 #include "output_files.hpp"
 #include "pak/error.hpp"
@@ -28,8 +28,9 @@ int runFlow(FlowArguments& args, const CLI::App& command) {
   using Clock = std::chrono::steady_clock;
   auto start = Clock::now();
   const CommonArguments& common = args.common;
-  if (!common.config.empty()) flowOptions().applyConfig(common.config, command, args, &args.common.lengths);
-  if (!args.mirror.empty()) args.options.mirror = parseMirror(args.mirror);
+  nlohmann::json config;
+  if (!common.config.empty()) config = readConfigObject(common.config);
+  resolveFlowOptions(args, command, common.config.empty() ? nullptr : &config, common.config);
 
   const LoadedScene input = loadScene(args.scene, SceneOptions{});
   const Scene& scene = input.scene;

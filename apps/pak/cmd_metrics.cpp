@@ -16,6 +16,8 @@
 #include <nlohmann/json.hpp>
 
 #include "command.hpp"
+#include "metrics_measure.hpp"
+#include "metrics_resolve.hpp"
 #include "pak/error.hpp"
 #include "pak/geom/clipping.hpp"
 #include "pak/io/output_batch.hpp"
@@ -37,57 +39,12 @@ namespace {
 
 using nlohmann::json;
 
-struct MetricsArgs {
-  std::vector<std::string> files;
-  std::optional<double> gap;
-  std::string report;
-  MetricsOptions metrics;
-  bool calibrate = false;
-  PackingReadOptions layers;
-  std::string csv, json, plot;
-  std::optional<double> visualize;
-  std::string visualizeOut;
-  std::string distanceMap;
-  std::string evennessMap;
-};
-
-// One packing's chapter-6 metrics and its evenness, measured on the same geometry.
-struct Measured {
-  PackingMetrics metrics;
-  Evenness evenness;
-};
+using Measured = MeasuredPacking;
 
 std::string extensionOf(const std::string& path) {
   std::string extension = std::filesystem::path(path).extension().string();
   for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return extension;
-}
-
-// d_gap in the packing's units from a Pak report: an explicit "d_gap", else the canonical
-// gap of `pak pack` divided by the canonical units per input unit.
-double gapFromReport(const std::string& path) {
-  json report;
-  try {
-    report = json::parse(readTextFile(path));
-  } catch (const json::exception& error) {
-    throw jsonSyntaxError(path, error.what());
-  }
-  if (!report.is_object()) throw InputError(path, "the report is not a JSON object");
-  if (report.contains("d_gap") && report["d_gap"].is_number()) return report["d_gap"].get<double>();
-  const json* gap = report.contains("parameters") && report["parameters"].is_object() &&
-                            report["parameters"].contains("gap")
-                        ? &report["parameters"]["gap"]
-                        : nullptr;
-  if (!gap || !gap->is_number() || !report.contains("canonical-scale") || !report["canonical-scale"].is_number())
-    throw InputError(path, "the report has neither \"d_gap\" nor \"parameters\".\"gap\" with \"canonical-scale\"");
-  double scale = report["canonical-scale"].get<double>();
-  if (!(scale > 0.0) || !std::isfinite(scale)) throw InputError(path, "\"canonical-scale\" must be positive");
-  return gap->get<double>() / scale;
-}
-
-double negativeRatio(const PackingGeometry& packing) {
-  double inside = area(intersect(unite(packing.elements), packing.container));
-  return 1.0 - inside / area(packing.container);
 }
 
 std::string fixed(double value, int decimals) {
@@ -100,32 +57,6 @@ std::string general(double value) {
   char buffer[64];
   std::snprintf(buffer, sizeof buffer, "%.6g", value);
   return buffer;
-}
-
-json curveJson(const Curve& curve) { return {{"r", curve.r}, {"value", curve.value}}; }
-
-
-json packingJson(const Measured& measured, const std::optional<double>& offset) {
-  const PackingMetrics& m = measured.metrics;
-  json out = {{"file", m.source},
-              {"elements", m.elementCount},
-              {"container-area", m.containerArea},
-              {"positive-ratio", m.positiveRatio},
-              {"negative-ratio", m.negativeRatio},
-              {"d_gap", m.gap},
-              {"d_gap-estimated", m.gapEstimated},
-              {"Q-half-gap", m.contactAtHalfGap},
-              {"O-half-gap", m.overlapAtHalfGap},
-              {"largest-empty-radius", m.largestEmptyRadius},
-              {"curves",
-               {{"Q", curveJson(m.sphericalContact)},
-                {"H", curveJson(m.distanceHistogram)},
-                {"O", curveJson(m.overlap)},
-                {"Q-grid", curveJson(m.gridSphericalContact)}}},
-              {"histogram", {{"edges", m.binEdges}, {"density", m.binDensity}}}};
-  out["calibration-offset"] = offset ? json(*offset) : json(nullptr);
-  out["evenness"] = evennessJson(measured.evenness);
-  return out;
 }
 
 // Long format: one row per sample, so any tool can pivot it. The evenness adds the curve P
@@ -182,8 +113,7 @@ std::string alignedRows(const std::vector<std::vector<std::string>>& rows) {
   return out.str();
 }
 
-std::string tableText(const std::vector<Measured>& all, const std::vector<std::optional<double>>& offsets,
-                      bool calibrated) {
+std::string tableText(const std::vector<Measured>& all, bool calibrated) {
   std::vector<std::vector<std::string>> rows;
   std::vector<std::string> header = {"file", "elements", "positive", "negative", "d_gap", "Q(d_gap/2)", "O(d_gap/2)",
                                      "largest empty r"};
@@ -199,7 +129,7 @@ std::string tableText(const std::vector<Measured>& all, const std::vector<std::o
                                     fixed(m.contactAtHalfGap, 5),
                                     fixed(m.overlapAtHalfGap, 5),
                                     general(m.largestEmptyRadius)};
-    if (calibrated) row.push_back(offsets[i] ? general(*offsets[i]) : "-");
+    if (calibrated) row.push_back(all[i].calibrationOffset ? general(*all[i].calibrationOffset) : "-");
     rows.push_back(row);
   }
   return alignedRows(rows);
@@ -229,7 +159,7 @@ std::string visualizationPath(const std::string& base, std::size_t index, std::s
       .string();
 }
 
-int runMetrics(MetricsArgs& args, const CLI::App&) {
+int runMetrics(MetricsArguments& args, const CLI::App& command) {
   // Check the outputs before the (slow) measuring, so a typo fails at once.
   if (!args.plot.empty() && extensionOf(args.plot) != ".png" && extensionOf(args.plot) != ".svg")
     throw InputError(args.plot, "unknown plot format '" + extensionOf(args.plot) + "' (use .png or .svg)");
@@ -254,10 +184,14 @@ int runMetrics(MetricsArgs& args, const CLI::App&) {
       for (std::size_t i = 0; i < count; ++i) outputs.push_back({option, visualizationPath(*path, i, count)});
   std::vector<std::string> inputs = args.files;
   inputs.push_back(args.report);
+  inputs.push_back(args.config);
   checkOutputsBeforeTheRun(outputs, inputs);
 
-  if (args.gap) args.metrics.gap = *args.gap;
-  else if (!args.report.empty()) args.metrics.gap = gapFromReport(args.report);
+  nlohmann::json config;
+  if (!args.config.empty()) config = readConfigObject(args.config);
+  const bool gapGiven = resolveMetricsOptions(args, command, args.config.empty() ? nullptr : &config, args.config);
+  // A gap given wins over the report's, which is not read then.
+  if (!gapGiven && !args.report.empty()) args.metrics.gap = gapFromReport(readReportFile(args.report), args.report);
 
   std::vector<PackingGeometry> packings;
   for (const std::string& file : args.files) packings.push_back(readPacking(file, args.layers));
@@ -270,30 +204,15 @@ int runMetrics(MetricsArgs& args, const CLI::App&) {
       if (*args.visualize > side) throw InputError("--visualize", "must be 0 to the container's size, " + messageNumber(side));
     }
 
-  // Thesis 6.4: compare at the same negative-space ratio, here the packings' mean.
-  std::vector<std::optional<double>> offsets(packings.size());
-  if (args.calibrate) {
-    double mean = 0.0;
-    for (const PackingGeometry& p : packings) mean += negativeRatio(p);
-    mean /= static_cast<double>(packings.size());
-    for (std::size_t i = 0; i < packings.size(); ++i) {
-      Calibration calibration = calibrateNegativeSpace(packings[i], mean);
-      offsets[i] = calibration.offset;
-      packings[i] = std::move(calibration.calibrated);
-    }
-  }
-
-  // --grid is the evenness grid too: both rasterize the container's bounding square.
+  const std::vector<Measured> measured = measurePackings(packings, args);
   EvennessOptions evenness;
   evenness.resolution = args.metrics.gridResolution;
-  std::vector<Measured> measured;
-  for (const PackingGeometry& p : packings) measured.push_back({measurePacking(p, args.metrics), measureEvenness(p, evenness)});
 
   OutputBatch batch;  // every output, or none
   if (!args.csv.empty()) writeFileAtomically(args.csv, csvText(measured));
   if (!args.json.empty()) {
     json list = json::array();
-    for (std::size_t i = 0; i < measured.size(); ++i) list.push_back(packingJson(measured[i], offsets[i]));
+    for (const Measured& m : measured) list.push_back(packingJson(m));
     writeFileAtomically(args.json, json{{"packings", list}}.dump(2) + "\n");
   }
   if (!args.plot.empty()) {
@@ -313,40 +232,19 @@ int runMetrics(MetricsArgs& args, const CLI::App&) {
       writeEvennessMapImage(packings[i], visualizationPath(args.evennessMap, i, packings.size()), evenness);
 
   batch.commit();
-  std::cout << tableText(measured, offsets, args.calibrate) << evennessTableText(measured) << std::flush;
+  std::cout << tableText(measured, args.calibrate) << evennessTableText(measured) << std::flush;
   return 0;
 }
 
-void declareMetricsOptions(CLI::App& command, MetricsArgs& args) {
+void declareMetricsOptions(CLI::App& command, MetricsArguments& args) {
   command.add_option("files", args.files, "Packing SVG files to measure and compare")->required()->type_name("PACKING");
-  command.add_option("--gap", args.gap, "d_gap in the file's units (default: from --report, else estimated)")
-      ->type_name("D");
   command.add_option("--report", args.report,
                      "Pak report (pak pack --report) to read d_gap from: \"d_gap\", or \"parameters\".\"gap\" / "
                      "\"canonical-scale\"")
       ->type_name("FILE");
-  command.add_option("--radii", args.metrics.radii, "samples of r for Q, H and O (default: 100)")->type_name("N");
-  command.add_option("--grid", args.metrics.gridResolution,
-                     "distance-transform grid cells along the container's bounding square, for the histogram, "
-                     "the distance map and the evenness measure (default: 1000)")
-      ->type_name("N");
-  command.add_option("--bins", args.metrics.histogramBins, "bins of the discrete distance histogram (default: 50)")
-      ->type_name("N");
-  command.add_option("--arc-tolerance", args.metrics.arcTolerance,
-                     "largest error of the polygon offsets and of the outline simplification before them, "
-                     "in the file's units (default 0: 1e-4 of the container's bounding square)")
-      ->type_name("D");
-  command.add_flag("--calibrate", args.calibrate,
-                   "offset every packing's elements uniformly to the packings' mean negative-space ratio first "
-                   "(thesis 6.4), and report the offset");
-  command.add_option("--container-layer", args.layers.containerLayer, "layer holding the container (default: container)")
-      ->type_name("NAME");
-  command.add_option("--elements-layer", args.layers.elementsLayer,
-                     "layer whose child groups are the elements (default: elements)")
-      ->type_name("NAME");
-  command.add_option("--fixed-layer", args.layers.fixedLayer,
-                     "layer of fixed elements, positive space for the evenness measure (default: fixed)")
-      ->type_name("NAME");
+  command.add_option("--config", args.config, "JSON file of option names to values (command-line flags win)")
+      ->type_name("FILE");
+  metricsOptions().addTo(command, args);
   command.add_option("--csv", args.csv, "write every curve as CSV (file,curve,r,value)")->type_name("FILE");
   command.add_option("--json", args.json, "write every quantity and curve as JSON")->type_name("FILE");
   command.add_option("--plot", args.plot, "draw Q, H and O of all packings side by side (.png or .svg)")
@@ -368,7 +266,7 @@ void declareMetricsOptions(CLI::App& command, MetricsArgs& args) {
       ->type_name("FILE.png");
 }
 
-const CommandRegistrar registrar{subcommand<MetricsArgs>(
+const CommandRegistrar registrar{subcommand<MetricsArguments>(
     "metrics",
     "Measure how even the negative space of packings is (thesis chapter 6): positive/negative "
     "space ratios, the spherical contact probability Q(r), the distance histogram H(r) = -Q'(r), "

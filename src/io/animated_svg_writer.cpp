@@ -228,16 +228,20 @@ std::string flipBookSvg(const std::vector<Drawing>& frames, const AnimationOutpu
 
 }  // namespace
 
+std::string animatedSvgText(const std::vector<Drawing>& frames, const std::string& where,
+                            const AnimationOutputOptions& options) {
+  animation_frames::checkFrames(frames, options, where);
+  try {
+    return sameStructure(frames) ? morphingSvg(frames, options) : flipBookSvg(frames, options);
+  } catch (const InputError& error) {
+    throw InputError(where, error.what());
+  }
+}
+
 void writeAnimatedSvg(const std::vector<Drawing>& frames, const std::string& path, const AnimationOutputOptions& options) {
   animation_frames::checkFrames(frames, options, path);
   checkOutputPath(path);  // a missing folder fails before the work
-  std::string text;
-  try {
-    text = sameStructure(frames) ? morphingSvg(frames, options) : flipBookSvg(frames, options);
-  } catch (const InputError& error) {
-    throw InputError(path, error.what());
-  }
-  writeFileAtomically(path, text);
+  writeFileAtomically(path, animatedSvgText(frames, path, options));
 }
 
 }  // namespace pak

@@ -206,4 +206,28 @@ TEST_F(CliMetrics, BadPackingsFailWithOneErrorLine) {
   EXPECT_NE(badPlot.err.find("use .png or .svg"), std::string::npos) << badPlot.err;
 }
 
+// The options have one table: a --config file gives them as the flags do, the flags win, and
+// a wrong key or type is one error line naming the file.
+TEST_F(CliMetrics, ConfigGivesTheSameOptionsAsFlags) {
+  const std::string config = folder_->write("metrics-config.json", R"({"radii": 20, "grid": 200, "bins": 10, "gap": 5})");
+  PakRun flags = runPak("metrics " + shellQuoted(file("packing.svg")) + kFast + " --gap 5 --json " +
+                        shellQuoted(file("flags.json")));
+  ASSERT_EQ(flags.exitCode, 0) << flags.err;
+  PakRun configured = runPak("metrics " + shellQuoted(file("packing.svg")) + " --config " + shellQuoted(config) +
+                             " --json " + shellQuoted(file("config.json")));
+  ASSERT_EQ(configured.exitCode, 0) << configured.err;
+  EXPECT_EQ(readWholeFile(file("flags.json")), readWholeFile(file("config.json")));
+  // A flag wins over the file, and a given gap over the report's.
+  PakRun both = runPak("metrics " + shellQuoted(file("packing.svg")) + " --config " + shellQuoted(config) +
+                       " --gap 7 --report " + shellQuoted(file("report.json")) + " --json " + shellQuoted(file("both.json")));
+  ASSERT_EQ(both.exitCode, 0) << both.err;
+  EXPECT_EQ(json::parse(readWholeFile(file("both.json")))["packings"][0]["d_gap"].get<double>(), 7.0);
+
+  const std::string bad = folder_->write("metrics-bad.json", R"({"grid": "fine"})");
+  PakRun run = runPak("metrics " + shellQuoted(file("packing.svg")) + " --config " + shellQuoted(bad));
+  EXPECT_EQ(run.exitCode, 2);
+  ASSERT_EQ(run.errLines().size(), 1u) << run.err;
+  EXPECT_NE(run.err.find("\"grid\" must be an integer"), std::string::npos) << run.err;
+}
+
 }  // namespace

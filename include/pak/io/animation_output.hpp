@@ -34,6 +34,9 @@ void writeSvgFrames(const std::vector<Drawing>& frames, const std::string& folde
 // shapes, subpaths and point counts), each shape is one <path> whose `d` is animated through
 // the frames; otherwise each frame is a group shown for its time slot.
 void writeAnimatedSvg(const std::vector<Drawing>& frames, const std::string& path, const AnimationOutputOptions& = {});
+// The same SVG as text; errors name `where`.
+std::string animatedSvgText(const std::vector<Drawing>& frames, const std::string& where,
+                            const AnimationOutputOptions& = {});
 // An animated GIF (libcgif) with one palette for all frames.
 void writeGif(const std::vector<Drawing>& frames, const std::string& path, const AnimationOutputOptions& = {});
 // Whether the `ffmpeg` program can be run.
