@@ -33,6 +33,9 @@ PYBIND11_MODULE(pak, m) {
   m.attr("__version__") = PAK_VERSION;
   // What the CLI prints after "pak: error: ", as the exception's message.
   py::register_exception<pak::InputError>(m, "InputError", PyExc_ValueError);
+  // What the readers skipped in an input (the CLI's "pak: warning: …" lines).
+  m.attr("InputWarning") = py::reinterpret_steal<py::object>(PyErr_NewExceptionWithDoc(
+      "pak.InputWarning", "Something an input file holds that Pak skipped or reinterpreted, and why.", PyExc_UserWarning, nullptr));
 
   py::class_<SceneInput>(m, "Scene", "A container (and the scene around it), as `pak pack --container` reads it.")
       .def_property_readonly("file", [](const SceneInput& s) { return s.file; })

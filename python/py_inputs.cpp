@@ -3,10 +3,13 @@
 #include <algorithm>
 #include <cstdio>
 #include <limits>
+#include <set>
+#include <utility>
 
 #include <pybind11/stl.h>
 
 #include "pak/error.hpp"
+#include "pak/io/message_text.hpp"
 #include "pak/io/svg_reader.hpp"
 #include "py_arrays.hpp"
 #include "py_shapely.hpp"
@@ -79,15 +82,38 @@ std::string pathText(const py::handle& object) {
   return py::cast<std::string>(py::module_::import("os").attr("fspath")(object));
 }
 
+// What the readers skipped or reinterpreted, as `pak` prints it on stderr ("pak: warning:
+// …"): one pak.InputWarning per place and message (an element repeats its file's), which
+// Python's warnings filters show once, silence or turn into errors.
+void warnAbout(const std::vector<Warning>& warnings) {
+  if (warnings.empty()) return;
+  const py::object category = py::module_::import("pak").attr("InputWarning");
+  std::set<std::pair<std::string, std::string>> said;
+  for (const Warning& w : warnings)
+    if (said.emplace(w.where, w.message).second) {
+      const std::string text = oneLine(w.where.empty() ? w.message : w.where + ": " + w.message);
+      if (PyErr_WarnEx(category.ptr(), text.c_str(), 1) < 0) throw py::error_already_set();
+    }
+}
+
 }  // namespace
 
 SceneInput readScene(const std::string& path, const std::string& containerLayer) {
   SceneOptions options;
   options.containerLayer = containerLayer;
-  return {loadScene(path, options), path};
+  SceneInput input{loadScene(path, options), path};
+  warnAbout(input.loaded.warnings);
+  return input;
 }
 
-ElementsInput readElements(const std::vector<std::string>& paths) { return {loadElements(paths), paths}; }
+ElementsInput readElements(const std::vector<std::string>& paths) {
+  ElementsInput input{loadElements(paths), paths};
+  std::vector<Warning> warnings;
+  for (const LoadedElement& element : input.elements)
+    warnings.insert(warnings.end(), element.warnings.begin(), element.warnings.end());
+  warnAbout(warnings);
+  return input;
+}
 
 SceneInput sceneFromRings(const py::handle& rings, const py::handle& guides) {
   const std::vector<Ring> container = ringsFromObject(rings, "container");

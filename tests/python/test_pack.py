@@ -115,3 +115,17 @@ def test_ctrl_c_stops_a_run_with_keyboard_interrupt(source):
     finally:
         timer.cancel()
     assert time.monotonic() - start < 15.0
+
+
+def test_the_readers_warnings_are_input_warnings_as_the_cli_prints_them(pak_binary, tmp_path):
+    # A colour that cannot be parsed is skipped with a warning, which the CLI prints on stderr.
+    drawing = tmp_path / "red.svg"
+    drawing.write_text('<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 10 10">'
+                       '<rect width="10" height="10" style="fill:r\u00e9d"/></svg>', encoding="utf-8")
+    cli = subprocess.run([pak_binary, "inspect", str(drawing)], capture_output=True, text=True, check=True)
+    with pytest.warns(pak.InputWarning) as caught:
+        pak.read_elements([str(drawing)])
+    said = [str(w.message) for w in caught if issubclass(w.category, pak.InputWarning)]
+    assert said == [f'{drawing}: <rect>: ignored fill="r\u00e9d" (cannot be parsed)']
+    assert said[0] in cli.stdout
+    assert issubclass(pak.InputWarning, UserWarning)
