@@ -872,6 +872,11 @@ class ShapeContext : public NodeContext {
     double cx = 0, cy = 0, theta1 = 0, theta2 = 0;
     svgpp::arc_endpoint_to_center(from.x, from.y, to.x, to.y, rx, ry, rotation, largeArc, sweep, cx, cy, theta1,
                                   theta2);
+    // Coordinates or radii near 1e308 overflow the centre's squares; SVG++ would then cast
+    // the NaN angles to a cubic count (undefined behaviour).
+    if (!std::isfinite(cx) || !std::isfinite(cy) || !std::isfinite(theta1) || !std::isfinite(theta2))
+      throw InputError(place(), "arc to (" + formatNumber(x) + ", " + formatNumber(y) +
+                                    "): its centre is not a finite number (a coordinate or radius too large)");
     constexpr double turn = boost::math::constants::two_pi<double>();
     if (sweep && theta2 < theta1) theta2 += turn;
     if (!sweep && theta2 > theta1) theta2 -= turn;
