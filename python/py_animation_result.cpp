@@ -7,15 +7,14 @@
 #include "pak/io/animation_output.hpp"
 #include "pak/io/svg_writer.hpp"
 #include "py_arrays.hpp"
+#include "py_lists.hpp"
 #include "py_result.hpp"
 
 namespace pak::python {
 namespace {
 
 py::list outlinesOf(const Packing& frame) {
-  py::list all;
-  for (const Region& outline : artOutlines(frame)) all.append(ringArrays(outline));
-  return all;
+  return listOf(artOutlines(frame), [](const Region& outline) { return ringArrays(outline); });
 }
 
 void checkTime(double t) {
@@ -68,22 +67,18 @@ void bindAnimationResult(py::module_& m) {
       .def_property_readonly(
           "colors",
           [](const AnimationResult& r) {
-            py::list all;
-            for (const PlacedElement& e : firstFrame(r).elements) all.append(colorOf(e.art));
-            return all;
+            return listOf(firstFrame(r).elements, [](const PlacedElement& e) { return colorOf(e.art); });
           },
           "each element's colour in a frame, '#rrggbb' (its first fill, else stroke), or None")
       .def_property_readonly(
           "sources",
           [](const AnimationResult& r) {
-            py::list all;
-            for (const PlacedElement& e : firstFrame(r).elements) all.append(py::str(e.source));
-            return all;
+            return listOf(firstFrame(r).elements, [](const PlacedElement& e) { return py::str(e.source); });
           },
           "the file each element in a frame came from")
       .def_property_readonly(
           "report",
-          [](const AnimationResult& r) { return py::module_::import("json").attr("loads")(r.report.dump()); },
+          [](const AnimationResult& r) { return dictOf(r.report); },
           "the report `pak animate --report` writes, as a dict")
       .def("__len__", [](const AnimationResult& r) { return r.frames.packings.size(); })
       .def("to_svg", [](const AnimationResult& r) { return r.svg; },

@@ -1,6 +1,7 @@
 #include "py_flow_result.hpp"
 
 #include "py_arrays.hpp"
+#include "py_lists.hpp"
 #include "py_result.hpp"
 
 namespace pak::python {
@@ -10,45 +11,35 @@ void bindFlowResult(py::module_& m) {
       .def_property_readonly(
           "outlines",
           [](const FlowResult& r) {
-            py::list all;
-            for (const FlowElement& e : r.packing.elements) all.append(ringArrays(e.outline));
-            return all;
+            return listOf(r.packing.elements, [](const FlowElement& e) { return ringArrays(e.outline); });
           },
           "each placed element's bent outline as a list of (N, 2) arrays: outer rings and holes")
       .def_property_readonly(
           "spines",
           [](const FlowResult& r) {
-            py::list all;
-            for (const FlowElement& e : r.packing.elements) all.append(arrayFromRing(e.streamline));
-            return all;
+            return listOf(r.packing.elements, [](const FlowElement& e) { return arrayFromRing(e.streamline); });
           },
           "the streamline each element is bent along, an (N, 2) array")
       .def_property_readonly(
           "gap_outlines",
           [](const FlowResult& r) {
-            py::list all;
-            for (const FlowElement& e : r.packing.gapElements) all.append(ringArrays(e.outline));
-            return all;
+            return listOf(r.packing.gapElements, [](const FlowElement& e) { return ringArrays(e.outline); });
           },
           "with fill_gaps=True: the shapes made from the negative space, as outlines")
       .def_property_readonly(
           "colors",
           [](const FlowResult& r) {
-            py::list all;
-            for (const FlowElement& e : r.packing.elements) all.append(colorOf(e.art));
-            return all;
+            return listOf(r.packing.elements, [](const FlowElement& e) { return colorOf(e.art); });
           },
           "each placed element's colour, '#rrggbb' (its first fill, else stroke), or None")
       .def_property_readonly(
           "sources",
           [](const FlowResult& r) {
-            py::list all;
-            for (const FlowElement& e : r.packing.elements) all.append(py::str(e.source));
-            return all;
+            return listOf(r.packing.elements, [](const FlowElement& e) { return py::str(e.source); });
           },
           "the file (or name) each placed element came from")
       .def_property_readonly(
-          "report", [](const FlowResult& r) { return py::module_::import("json").attr("loads")(r.report.dump()); },
+          "report", [](const FlowResult& r) { return dictOf(r.report); },
           "the report `pak flow --report` writes, as a dict")
       .def("__len__", [](const FlowResult& r) { return r.packing.elements.size(); })
       .def("to_svg", [](const FlowResult& r) { return r.svg; }, "the SVG `pak flow -o` writes")

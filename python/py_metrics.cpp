@@ -8,6 +8,7 @@
 #include "pak/error.hpp"
 #include "pak/io/packing_reader.hpp"
 #include "py_flow_result.hpp"
+#include "py_lists.hpp"
 #include "py_options.hpp"
 #include "py_result.hpp"
 
@@ -105,9 +106,7 @@ py::object metrics(const py::object& packings, const py::object& report, const p
     for (const cli::MeasuredPacking& m : cli::measurePackings(geometries, args)) measured.push_back(cli::packingJson(m));
   }
   if (!many) return toPython(measured.front());
-  py::list all;
-  for (const nlohmann::json& m : measured) all.append(toPython(m));
-  return all;
+  return listOf(measured, [](const nlohmann::json& m) { return toPython(m); });
 }
 
 }  // namespace pak::python

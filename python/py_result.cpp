@@ -7,6 +7,7 @@
 #include "pak/io/atomic_file.hpp"
 #include "pak/io/png_renderer.hpp"
 #include "py_arrays.hpp"
+#include "py_lists.hpp"
 
 namespace pak::python {
 namespace {
@@ -54,38 +55,30 @@ void bindPackResult(py::module_& m) {
       .def_property_readonly(
           "outlines",
           [](const PackResult& r) {
-            py::list all;
-            for (const Region& outline : artOutlines(r.packing)) all.append(ringArrays(outline));
-            return all;
+            return listOf(artOutlines(r.packing), [](const Region& outline) { return ringArrays(outline); });
           },
           "each placed element's outline (what its art paints) as a list of (N, 2) arrays: outer rings and holes")
       .def_property_readonly(
           "skins",
           [](const PackResult& r) {
-            py::list all;
-            for (const PlacedElement& e : r.packing.elements) all.append(arrayFromRing(e.skin));
-            return all;
+            return listOf(r.packing.elements, [](const PlacedElement& e) { return arrayFromRing(e.skin); });
           },
           "each placed element's deformed skin, an (N, 2) array")
       .def_property_readonly(
           "colors",
           [](const PackResult& r) {
-            py::list all;
-            for (const PlacedElement& e : r.packing.elements) all.append(colorOf(e.art));
-            return all;
+            return listOf(r.packing.elements, [](const PlacedElement& e) { return colorOf(e.art); });
           },
           "each placed element's colour, '#rrggbb' (its first fill, else stroke), or None")
       .def_property_readonly(
           "sources",
           [](const PackResult& r) {
-            py::list all;
-            for (const PlacedElement& e : r.packing.elements) all.append(py::str(e.source));
-            return all;
+            return listOf(r.packing.elements, [](const PlacedElement& e) { return py::str(e.source); });
           },
           "the file (or name) each placed element came from")
       .def_property_readonly(
           "report",
-          [](const PackResult& r) { return py::module_::import("json").attr("loads")(r.report.dump()); },
+          [](const PackResult& r) { return dictOf(r.report); },
           "the report `pak pack --report` writes, as a dict")
       .def("__len__", [](const PackResult& r) { return r.packing.elements.size(); })
       .def("to_svg", [](const PackResult& r) { return r.svg; }, "the SVG `pak pack -o` writes")
