@@ -3,13 +3,11 @@
 #include <algorithm>
 #include <cstdio>
 #include <limits>
-#include <set>
-#include <utility>
 
 #include <pybind11/stl.h>
 
 #include "pak/error.hpp"
-#include "pak/io/message_text.hpp"
+#include "pak/io/warning_lines.hpp"
 #include "pak/io/svg_reader.hpp"
 #include "py_arrays.hpp"
 #include "py_shapely.hpp"
@@ -83,17 +81,13 @@ std::string pathText(const py::handle& object) {
 }
 
 // What the readers skipped or reinterpreted, as `pak` prints it on stderr ("pak: warning:
-// …"): one pak.InputWarning per place and message (an element repeats its file's), which
-// Python's warnings filters show once, silence or turn into errors.
+// …"): a pak.InputWarning each, which Python's warnings filters show once, silence or turn
+// into errors.
 void warnAbout(const std::vector<Warning>& warnings) {
   if (warnings.empty()) return;
   const py::object category = py::module_::import("pak").attr("InputWarning");
-  std::set<std::pair<std::string, std::string>> said;
-  for (const Warning& w : warnings)
-    if (said.emplace(w.where, w.message).second) {
-      const std::string text = oneLine(w.where.empty() ? w.message : w.where + ": " + w.message);
-      if (PyErr_WarnEx(category.ptr(), text.c_str(), 1) < 0) throw py::error_already_set();
-    }
+  for (const std::string& line : warningLines(warnings))
+    if (PyErr_WarnEx(category.ptr(), line.c_str(), 1) < 0) throw py::error_already_set();
 }
 
 }  // namespace

@@ -198,8 +198,7 @@ int runMetrics(MetricsArguments& args, const CLI::App& command) {
   // An offset wider than the container covers all of it, and a huge one overflows the clipper.
   if (args.visualize)
     for (const PackingGeometry& p : packings) {
-      Box box;
-      for (const Polygon& poly : p.container) box.add(bounds(poly));
+      const Box box = bounds(p.container);
       const double side = std::max(box.width(), box.height());
       if (*args.visualize > side) throw InputError("--visualize", "must be 0 to the container's size, " + messageNumber(side));
     }
