@@ -40,7 +40,8 @@ std::uint64_t runFingerprint(const AnimateArguments& args, const Library& librar
   parameters.erase("time-limit");
   // The frame separation runs after the simulation: a resumed run may separate differently.
   for (const char* key :
-       {"frame-separation", "frame-separation-samples", "frame-separation-ramp", "frame-separation-shrink-only"})
+       {"frame-separation", "frame-separation-samples", "frame-separation-ramp", "frame-separation-shrink-only",
+        "frame-separation-shrink-pairs"})
     parameters.erase(key);
   std::uint64_t h = fingerprintBytes(parameters.dump());
   h = fingerprintBytes(readTextFile(args.container), h);

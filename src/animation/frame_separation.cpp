@@ -101,10 +101,29 @@ double separateFrame(Packing& frame, const FrameSeparationOptions& options, std:
   PackingCheckOptions tolerance;
   tolerance.areaTolerance = options.areaTolerance * area(frame.container);
   if (check) check->reset();
+  // Which of an overlapping pair may move instead of shrinking: an unguided element with moves
+  // left (a guided one is held on its path), and of two unguided ones only without shrinkPairs. Each
+  // that may goes away from the centroid of their overlap; false when neither may.
+  auto movePair = [&](std::size_t a, std::size_t b, const std::vector<Region>& outlines) {
+    const bool guidedA = frame.elements[a].guided, guidedB = frame.elements[b].guided;
+    if (guidedA == guidedB && (guidedA || options.shrinkPairs)) return false;
+    const int limit = kMovesPerRound * options.rounds;
+    const bool moveA = !guidedA && moves[a] < limit, moveB = !guidedB && moves[b] < limit;
+    if (!moveA && !moveB) return false;
+    const Region shared = intersect(outlines[a], outlines[b]);
+    const Vec2 centreA = skinCentre(frame.elements[a]), centreB = skinCentre(frame.elements[b]);
+    const Vec2 from = !shared.empty() ? centroid(shared) : guidedA ? centreA : guidedB ? centreB : (centreA + centreB) * 0.5;
+    bool any = false;
+    auto push = [&](std::size_t e, Vec2 centre) {
+      if (const Vec2 direction = centre - from; lengthSquared(direction) > 0.0) away[e] += normalized(direction), any = true;
+    };
+    if (moveA) push(a, centreA);
+    if (moveB) push(b, centreB);
+    return any;
+  };
   // Each round shrinks the elements of every overlapping pair and those outside, except that
-  // an unguided element in a guided one's way moves away from their overlap instead, while it
-  // has moves left. A round that only moves does not count against `rounds`, so a frame with
-  // no guided element is separated exactly as by shrinking alone.
+  // the unguided ones of a pair move away from their overlap instead, while they have moves
+  // left. A round that only moves does not count against `rounds`.
   for (int round = 0, shrinking = 0; shrinking < options.rounds && round < (1 + kMovesPerRound) * options.rounds; ++round) {
     const std::vector<Region> outlines = checkedOutlines(frame);
     PackingCheck result = verifyPacking(outlines, frame.container, tolerance);
@@ -118,16 +137,7 @@ double separateFrame(Packing& frame, const FrameSeparationOptions& options, std:
       if (e < count) shrink[e] = 1;  // past the elements: the fixed art, which its neighbour leaves
     };
     for (const auto& [a, b] : result.overlapping) {
-      const bool pairWithGuided = a < count && b < count && frame.elements[a].guided != frame.elements[b].guided;
-      const std::size_t other = pairWithGuided && frame.elements[a].guided ? b : a, guided = other == a ? b : a;
-      if (!options.shrinkOnly && pairWithGuided && moves[other] < kMovesPerRound * options.rounds) {
-        const Region shared = intersect(outlines[other], outlines[guided]);
-        Vec2 direction = skinCentre(frame.elements[other]) - (shared.empty() ? skinCentre(frame.elements[guided]) : centroid(shared));
-        if (lengthSquared(direction) > 0.0) {
-          away[other] += normalized(direction);
-          continue;
-        }
-      }
+      if (!options.shrinkOnly && a < count && b < count && movePair(a, b, outlines)) continue;
       mark(a), mark(b);
     }
     for (std::size_t e : result.outside) mark(e);
@@ -181,7 +191,7 @@ void separateAnimation(AnimatedPacking& animation, const FrameSeparationOptions&
   // A shift is eased the same way, but where the tents of several samples overlap it is their
   // weighted mean (a lowest shift has no meaning): a sample's own need where it stands alone,
   // tapering to none over `ramp`.
-  auto easedProfile = [&](const std::vector<std::vector<double>>& needed, const std::vector<std::vector<Vec2>>& moved) {
+  auto easeScales = [&](const std::vector<std::vector<double>>& needed) {
     for (std::size_t e = 0; e < count; ++e) {
       std::vector<double>& profile = animation.elements[e].separationScale;
       profile.assign(static_cast<std::size_t>(n), 1.0);
@@ -190,6 +200,10 @@ void separateAnimation(AnimatedPacking& animation, const FrameSeparationOptions&
         if (shrink <= 0.0) continue;
         for (int k = 0; k < n; ++k) profile[k] = std::min(profile[k], 1.0 - shrink * weight(k, j));
       }
+    }
+  };
+  auto easeShifts = [&](const std::vector<std::vector<Vec2>>& moved) {
+    for (std::size_t e = 0; e < count; ++e) {
       std::vector<Vec2>& shifts = animation.elements[e].separationShift;
       shifts.clear();
       for (int j = 0; j < n && shifts.empty(); ++j)
@@ -212,11 +226,16 @@ void separateAnimation(AnimatedPacking& animation, const FrameSeparationOptions&
   // What each sampled frame needs, element by element (frames are independent: in parallel).
   // The eased profile shrinks elements where they did not need it, and a curved one shrunk
   // about its centre can reach into a neighbour: the frames are checked again with it, and
-  // what they still need is added, a few times.
-  constexpr int kPasses = 3;
+  // what they still need is added, a few times. Eased shifts are means, which can fall short
+  // of a sample's own need, so the last pass only shrinks, on the shifts as they stand: a
+  // shrinking profile is the lowest of its tents, and meets every sample's need.
+  constexpr int kPasses = 4;
+  FrameSeparationOptions shrinking = options;
+  shrinking.shrinkOnly = true;
   std::vector<std::vector<double>> needed(static_cast<std::size_t>(n), std::vector<double>(count, 1.0));
   std::vector<std::vector<Vec2>> moved(static_cast<std::size_t>(n), std::vector<Vec2>(count));
   for (int pass = 0; pass < kPasses; ++pass) {
+    const bool last = pass == kPasses - 1;
     std::vector<char> more(static_cast<std::size_t>(n), 0);
     if (pass > 0) animation.separationTimes = times;  // animationFrame applies the profile
     pool.parallelFor(static_cast<std::size_t>(n), 1, [&](std::size_t begin, std::size_t end) {
@@ -224,7 +243,7 @@ void separateAnimation(AnimatedPacking& animation, const FrameSeparationOptions&
       std::vector<Vec2> extraShift;
       for (std::size_t k = begin; k < end; ++k) {
         Packing frame = animationFrame(animation, times[k]);
-        const double smallest = separateFrame(frame, options, &extra, nullptr, &extraShift);
+        const double smallest = separateFrame(frame, last ? shrinking : options, &extra, nullptr, &extraShift);
         if (smallest == 1.0 && std::all_of(extraShift.begin(), extraShift.end(), [](Vec2 v) { return lengthSquared(v) == 0.0; }))
           continue;
         more[k] = 1;
@@ -236,7 +255,8 @@ void separateAnimation(AnimatedPacking& animation, const FrameSeparationOptions&
     });
     animation.separationTimes.clear();
     if (std::none_of(more.begin(), more.end(), [](char m) { return m != 0; })) break;
-    easedProfile(needed, moved);
+    easeScales(needed);
+    if (!last) easeShifts(moved);
   }
   if (std::all_of(animation.elements.begin(), animation.elements.end(),
                   [](const AnimatedElement& e) { return e.separationScale.empty(); }))

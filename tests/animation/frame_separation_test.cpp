@@ -37,11 +37,34 @@ PackingCheck checked(const Packing& frame) {
   return verifyPacking(artOutlines(frame), frame.container, options);
 }
 
+// By default two unguided elements that overlap move apart, each away from their overlap by
+// 1 % of its radius a round, and neither shrinks.
+TEST(FrameSeparation, TwoUnguidedElementsMoveApartAndKeepTheirSize) {
+  Packing frame = threeSquares();
+  std::vector<double> scales;
+  std::vector<Vec2> shifts;
+  EXPECT_EQ(separateFrame(frame, {}, &scales, nullptr, &shifts), 1.0);
+  EXPECT_EQ(checked(frame).overlappingPairs, 0);
+  EXPECT_EQ(scales, (std::vector<double>{1.0, 1.0, 1.0}));
+  ASSERT_EQ(shifts.size(), 3u);
+  // The overlap is the strip x ∈ [29, 30]: the first goes left, the second right, until the
+  // strip is gone, and neither much further than a round past that.
+  EXPECT_LT(shifts[0].x, 0.0);
+  EXPECT_GT(shifts[1].x, 0.0);
+  const double opened = shifts[1].x - shifts[0].x, round = 0.01 * std::sqrt(200.0);
+  EXPECT_GE(opened, 1.0);
+  EXPECT_LT(opened, 1.0 + 2.0 * round);
+  EXPECT_EQ(shifts[2], Vec2{});
+  EXPECT_EQ(frame.elements[2].skin, threeSquares().elements[2].skin);  // the bystander is untouched
+}
+
 TEST(FrameSeparation, ShrinksOnlyTheOverlappingPairUntilTheFrameIsClean) {
   Packing frame = threeSquares();
   ASSERT_EQ(checked(frame).overlappingPairs, 1);
   std::vector<double> scales;
-  const double smallest = separateFrame(frame, {}, &scales);
+  FrameSeparationOptions shrinkPairs;
+  shrinkPairs.shrinkPairs = true;
+  const double smallest = separateFrame(frame, shrinkPairs, &scales);
   EXPECT_EQ(checked(frame).overlappingPairs, 0);
   ASSERT_EQ(scales.size(), 3u);
   // 1 of 20 overlaps: each square must lose 5 % of its width, six rounds of 1 %.
@@ -124,6 +147,7 @@ TEST(FrameSeparation, PackedFramesAtTheSamplesAreCleanAndTheShrinkingIsEased) {
   AnimationOptions options = test::quickAnimationOptions();
   options.stop.maxIterations = 400;  // long enough for the stars to press each other
   options.frameSeparation.samples = 40;
+  options.frameSeparation.shrinkPairs = true;  // the shrinking's easing; the moves below
   AnimationOptions unseparated = options;
   unseparated.frameSeparation.rounds = 0;
   const AnimatedPacking raw =
@@ -157,6 +181,25 @@ TEST(FrameSeparation, PackedFramesAtTheSamplesAreCleanAndTheShrinkingIsEased) {
   options.run.threads = 2;
   const AnimatedPacking b = packAnimation(test::discScene(), {test::starElement("star.svg")}, test::spinningStars(8), options);
   for (std::size_t e = 0; e < a.elements.size(); ++e) EXPECT_EQ(a.elements[e].separationScale, b.elements[e].separationScale);
+
+  // By default the pairs move apart first: clean at every sample again, some elements shifted,
+  // and the same on one thread and two.
+  options.frameSeparation.shrinkPairs = false;
+  const AnimatedPacking moved = packAnimation(test::discScene(), {test::starElement("star.svg")}, test::spinningStars(8), options);
+  int shifted = 0;
+  for (const AnimatedElement& e : moved.elements) shifted += e.separationShift.empty() ? 0 : 1;
+  EXPECT_GT(shifted, 0);
+  for (double t : moved.separationTimes) {
+    const PackingCheck check = checked(animationFrame(moved, t));
+    EXPECT_EQ(check.overlappingPairs, 0) << "t = " << t;
+    EXPECT_EQ(check.elementsOutside, 0) << "t = " << t;
+  }
+  options.run.threads = 1;
+  const AnimatedPacking movedAlone = packAnimation(test::discScene(), {test::starElement("star.svg")}, test::spinningStars(8), options);
+  for (std::size_t e = 0; e < moved.elements.size(); ++e) {
+    EXPECT_EQ(moved.elements[e].separationShift, movedAlone.elements[e].separationShift);
+    EXPECT_EQ(moved.elements[e].separationScale, movedAlone.elements[e].separationScale);
+  }
 }
 
 }  // namespace

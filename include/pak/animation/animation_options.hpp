@@ -39,6 +39,10 @@ struct FrameSeparationOptions {
   // centres cannot take a tail off its back (docs/animationpak.md, sixth round). true: every
   // offending element shrinks, as before.
   bool shrinkOnly = false;
+  // By default two unguided elements that overlap also move apart first, each away from where
+  // they overlap: a sliver costs a small eased shift, not a smaller element (docs/animationpak.md,
+  // seventh round). true: they shrink at once (only a guided element's partner moves).
+  bool shrinkPairs = false;
 };
 
 struct AnimationOptions {
