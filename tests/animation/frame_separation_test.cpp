@@ -37,15 +37,21 @@ PackingCheck checked(const Packing& frame) {
   return verifyPacking(artOutlines(frame), frame.container, options);
 }
 
-// By default two unguided elements that overlap move apart, each away from their overlap by
-// 1 % of its radius a round, and neither shrinks.
-TEST(FrameSeparation, TwoUnguidedElementsMoveApartAndKeepTheirSize) {
-  Packing frame = threeSquares();
+// Separates the frame with the defaults, expecting it clean with no element shrunk: the shifts.
+std::vector<Vec2> separatedByMovesAlone(Packing& frame) {
   std::vector<double> scales;
   std::vector<Vec2> shifts;
   EXPECT_EQ(separateFrame(frame, {}, &scales, nullptr, &shifts), 1.0);
   EXPECT_EQ(checked(frame).overlappingPairs, 0);
-  EXPECT_EQ(scales, (std::vector<double>{1.0, 1.0, 1.0}));
+  EXPECT_EQ(scales, std::vector<double>(frame.elements.size(), 1.0));
+  return shifts;
+}
+
+// By default two unguided elements that overlap move apart, each away from their overlap by
+// 1 % of its radius a round, and neither shrinks.
+TEST(FrameSeparation, TwoUnguidedElementsMoveApartAndKeepTheirSize) {
+  Packing frame = threeSquares();
+  const std::vector<Vec2> shifts = separatedByMovesAlone(frame);
   ASSERT_EQ(shifts.size(), 3u);
   // The overlap is the strip x ∈ [29, 30]: the first goes left, the second right, until the
   // strip is gone, and neither much further than a round past that.
@@ -98,11 +104,7 @@ TEST(FrameSeparation, NoRoundsChangeNothing) {
 TEST(FrameSeparation, AnElementInAGuidedOnesWayMovesOffItAndTheGuidedOneKeepsItsSize) {
   Packing frame = threeSquares();
   frame.elements[0].guided = true;
-  std::vector<double> scales;
-  std::vector<Vec2> shifts;
-  EXPECT_EQ(separateFrame(frame, {}, &scales, nullptr, &shifts), 1.0);
-  EXPECT_EQ(checked(frame).overlappingPairs, 0);
-  EXPECT_EQ(scales, (std::vector<double>{1.0, 1.0, 1.0}));
+  std::vector<Vec2> shifts = separatedByMovesAlone(frame);
   ASSERT_EQ(shifts.size(), 3u);
   EXPECT_EQ(shifts[0], Vec2{});
   EXPECT_EQ(shifts[2], Vec2{});
@@ -120,6 +122,7 @@ TEST(FrameSeparation, AnElementInAGuidedOnesWayMovesOffItAndTheGuidedOneKeepsIts
   evenly.elements[0].guided = true;
   FrameSeparationOptions shrinkOnly;
   shrinkOnly.shrinkOnly = true;
+  std::vector<double> scales;
   separateFrame(evenly, shrinkOnly, &scales, nullptr, &shifts);
   EXPECT_NEAR(scales[0], std::pow(0.99, 6), 1e-12);
   EXPECT_NEAR(scales[1], std::pow(0.99, 6), 1e-12);
