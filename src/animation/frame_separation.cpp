@@ -102,8 +102,8 @@ double separateFrame(Packing& frame, const FrameSeparationOptions& options, std:
   tolerance.areaTolerance = options.areaTolerance * area(frame.container);
   if (check) check->reset();
   // Which of an overlapping pair may move instead of shrinking: an unguided element with moves
-  // left (a guided one is held on its path), and of two unguided ones only without shrinkPairs. Each
-  // that may goes away from the centroid of their overlap; false when neither may.
+  // left (a guided one is held on its path); of two unguided ones, only without shrinkPairs.
+  // Each that may goes away from the centroid of their overlap; false when neither may.
   auto movePair = [&](std::size_t a, std::size_t b, const std::vector<Region>& outlines) {
     const bool guidedA = frame.elements[a].guided, guidedB = frame.elements[b].guided;
     if (guidedA == guidedB && (guidedA || options.shrinkPairs)) return false;

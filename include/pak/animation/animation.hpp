@@ -135,8 +135,8 @@ void separateAnimation(AnimatedPacking& animation, const FrameSeparationOptions&
 // its part inside), then the fixed art (an obstacle) as one more outline when there is any.
 std::vector<Region> checkedOutlines(const Packing& frame);
 // One frame's separation, the safety net at t between the samples: each offending element
-// shrinks a step per round until the frame is clean; an unguided element in a guided one's
-// way first moves off it (FrameSeparationOptions::shrinkOnly). Returns the smallest scale it
+// shrinks a step per round until the frame is clean; an unguided element of an overlapping
+// pair first moves away from the overlap (FrameSeparationOptions::shrinkOnly, shrinkPairs). Returns the smallest scale it
 // gave an element (1: the frame was clean, or rounds = 0); `scales` and `shifts`, when given,
 // get every element's; `check`, when given, gets the verifyPacking of the frame as returned if
 // the last round made one (it did unless rounds = 0 or the rounds ran out), so a caller need
