@@ -112,7 +112,9 @@ double separateFrame(Packing& frame, const FrameSeparationOptions& options, std:
     if (!moveA && !moveB) return false;
     const Region shared = intersect(outlines[a], outlines[b]);
     const Vec2 centreA = skinCentre(frame.elements[a]), centreB = skinCentre(frame.elements[b]);
-    const Vec2 from = !shared.empty() ? centroid(shared) : guidedA ? centreA : guidedB ? centreB : (centreA + centreB) * 0.5;
+    // With no overlap area to go by, away from the midpoint: for a guided pair, the same
+    // direction as away from the guided element.
+    const Vec2 from = shared.empty() ? (centreA + centreB) * 0.5 : centroid(shared);
     bool any = false;
     auto push = [&](std::size_t e, Vec2 centre) {
       if (const Vec2 direction = centre - from; lengthSquared(direction) > 0.0) away[e] += normalized(direction), any = true;
@@ -188,9 +190,6 @@ void separateAnimation(AnimatedPacking& animation, const FrameSeparationOptions&
   auto weight = [&](int k, int j) {
     return options.ramp > 0.0 ? std::max(0.0, 1.0 - apart(times[k], times[j]) / options.ramp) : (k == j ? 1.0 : 0.0);
   };
-  // A shift is eased the same way, but where the tents of several samples overlap it is their
-  // weighted mean (a lowest shift has no meaning): a sample's own need where it stands alone,
-  // tapering to none over `ramp`.
   auto easeScales = [&](const std::vector<std::vector<double>>& needed) {
     for (std::size_t e = 0; e < count; ++e) {
       std::vector<double>& profile = animation.elements[e].separationScale;
@@ -202,6 +201,9 @@ void separateAnimation(AnimatedPacking& animation, const FrameSeparationOptions&
       }
     }
   };
+  // A shift is eased the same way, but where the tents of several samples overlap it is their
+  // weighted mean (a lowest shift has no meaning): a sample's own need where it stands alone,
+  // tapering to none over `ramp`.
   auto easeShifts = [&](const std::vector<std::vector<Vec2>>& moved) {
     for (std::size_t e = 0; e < count; ++e) {
       std::vector<Vec2>& shifts = animation.elements[e].separationShift;
