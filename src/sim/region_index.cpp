@@ -13,6 +13,19 @@ namespace {
 Vec2 outwardNormal(Vec2 a, Vec2 b) { return normalized(Vec2{b.y - a.y, a.x - b.x}); }
 }  // namespace
 
+// The cells of ring r (Chebyshev distance r) around (ci, cj) that lie on the grid, in a fixed order.
+template <typename Visit>
+void RegionIndex::visitRing(int ci, int cj, int r, Visit&& visit) const {
+  for (int j = cj - r; j <= cj + r; ++j) {
+    if (j < 0 || j >= ny_) continue;
+    const bool edgeRow = (j == cj - r || j == cj + r);
+    for (int i = ci - r; i <= ci + r; i += (edgeRow ? 1 : 2 * r)) {
+      if (i >= 0 && i < nx_) visit(i, j);
+      if (r == 0) break;
+    }
+  }
+}
+
 RegionIndex::RegionIndex(const Region& input, double cellSize) : cell_(cellSize) {
   Region region = input;
   normalizeOrientation(region);  // outer rings positive, holes negative: interior on the left
@@ -82,6 +95,48 @@ RegionIndex::RegionIndex(const Region& input, double cellSize) : cell_(cellSize)
     for (int i = 0; i < nx_; ++i) { relax(i, j, -1, 0); relax(i, j, -1, -1); relax(i, j, 0, -1); relax(i, j, 1, -1); }
   for (int j = ny_ - 1; j >= 0; --j)
     for (int i = nx_ - 1; i >= 0; --i) { relax(i, j, 1, 0); relax(i, j, 1, 1); relax(i, j, 0, 1); relax(i, j, -1, 1); }
+  listNearSegments();
+}
+
+// Every point of a cell is within half its diagonal of the centre, so no nearer to the
+// boundary than the centre's distance plus that: a segment whose bounding box is farther from
+// the cell cannot be nearest to any point in it. The rest are listed in the order the ring
+// search meets them (first meeting), so that among equally near segments the list yields the
+// one the search would.
+void RegionIndex::listNearSegments() {
+  const std::size_t cells = cellState_.size();
+  std::vector<double> bound(cells, 0.0);
+  for (std::size_t c = 0; c < cells; ++c)  // before any list exists: by the ring search
+    if (cellsToBoundary_[c] <= kListedRings) {
+      const int i = static_cast<int>(c % nx_), j = static_cast<int>(c / nx_);
+      const Vec2 centre = origin_ + Vec2{(i + 0.5) * cell_, (j + 0.5) * cell_};
+      bound[c] = closestAround(centre).distance + 0.5 * std::sqrt(2.0) * cell_;
+    }
+  std::vector<int> start(cells + 1, 0);
+  std::vector<std::size_t> seenBy(segments_.size(), cells);
+  for (std::size_t c = 0; c < cells; ++c) {
+    start[c] = static_cast<int>(nearSegments_.size());
+    if (cellsToBoundary_[c] > kListedRings) continue;
+    const int i = static_cast<int>(c % nx_), j = static_cast<int>(c / nx_);
+    const Vec2 lo = origin_ + Vec2{i * cell_, j * cell_}, hi = lo + Vec2{cell_, cell_};
+    // A segment met in ring r touches a cell at least (r − 1) cells from this one.
+    const int rings = static_cast<int>(bound[c] / cell_) + 1;
+    for (int r = 0; r <= rings; ++r)
+      visitRing(i, j, r, [&](int ri, int rj) {
+        const int rc = cellIndex(ri, rj);
+        for (int k = cellStart_[rc]; k < cellStart_[rc + 1]; ++k) {
+          const int s = entries_[k];
+          if (seenBy[s] == c) continue;
+          seenBy[s] = c;
+          const Segment& seg = segments_[s];
+          const double dx = std::max({0.0, lo.x - std::max(seg.a.x, seg.b.x), std::min(seg.a.x, seg.b.x) - hi.x});
+          const double dy = std::max({0.0, lo.y - std::max(seg.a.y, seg.b.y), std::min(seg.a.y, seg.b.y) - hi.y});
+          if (dx * dx + dy * dy <= bound[c] * bound[c]) nearSegments_.push_back(s);
+        }
+      });
+  }
+  start[cells] = static_cast<int>(nearSegments_.size());
+  nearStart_ = std::move(start);
 }
 
 double RegionIndex::insideDistanceBound(Vec2 p) const {
@@ -154,17 +209,15 @@ RegionIndex::Query RegionIndex::closestAround(Vec2 p) const {
     // radius, stop.
     const int ci = std::min(nx_ - 1, static_cast<int>((p.x - origin_.x) / cell_));
     const int cj = std::min(ny_ - 1, static_cast<int>((p.y - origin_.y) / cell_));
-    const int maxRing = std::max(nx_, ny_) + 1;
-    for (int r = 0; r <= maxRing; ++r) {
-      for (int j = cj - r; j <= cj + r; ++j) {
-        if (j < 0 || j >= ny_) continue;
-        bool edgeRow = (j == cj - r || j == cj + r);
-        for (int i = ci - r; i <= ci + r; i += (edgeRow ? 1 : 2 * r)) {
-          if (i >= 0 && i < nx_) visitCell(i, j);
-          if (r == 0) break;
-        }
+    const int c = cellIndex(ci, cj);
+    if (!nearStart_.empty() && nearStart_[c] < nearStart_[c + 1]) {
+      for (int k = nearStart_[c]; k < nearStart_[c + 1]; ++k) consider(nearSegments_[k]);
+    } else {
+      const int maxRing = std::max(nx_, ny_) + 1;
+      for (int r = 0; r <= maxRing; ++r) {
+        visitRing(ci, cj, r, visitCell);
+        if (bestSegment >= 0 && std::sqrt(best) <= r * cell_) break;
       }
-      if (bestSegment >= 0 && std::sqrt(best) <= r * cell_) break;
     }
   }
   Query q;

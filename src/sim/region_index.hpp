@@ -2,6 +2,9 @@
 // Fast, exact "is this point inside the region, and where is the nearest boundary point?"
 // for a static region (a container, or fixed obstacles). Cells that no boundary segment
 // touches answer inside/outside from a precomputed flag; the rest search outward ring by ring.
+// A cell within a few rings of the boundary keeps the segments that can be nearest to a point
+// in it, in the order that search meets them, so a query there scans a short list instead and
+// finds the same segment.
 #include <cstdint>
 #include <vector>
 
@@ -33,6 +36,9 @@ class RegionIndex {
  private:
   struct Segment { Vec2 a, b; Vec2 normal; Vec2 normalA, normalB; };  // outward normals
   Query closestAround(Vec2 p) const;
+  template <typename Visit>
+  void visitRing(int ci, int cj, int r, Visit&& visit) const;
+  void listNearSegments();
   template <typename VisitCell>
   void closestFromOffGrid(Vec2 p, VisitCell&& visitCell, const double& best) const;
   int cellIndex(int i, int j) const { return j * nx_ + i; }
@@ -45,6 +51,9 @@ class RegionIndex {
   enum : std::uint8_t { kOutside = 0, kInside = 1, kCrossed = 2 };
   std::vector<std::uint8_t> cellState_;
   std::vector<int> cellsToBoundary_;  // Chebyshev distance, in cells, to the nearest crossed cell
+  // Per cell within kListedRings of a crossed cell (else empty): the segments that can be nearest.
+  static constexpr int kListedRings = 4;
+  std::vector<int> nearStart_, nearSegments_;
 };
 
 }  // namespace pak

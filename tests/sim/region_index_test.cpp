@@ -96,6 +96,32 @@ TEST(RegionIndex, FarPointsAroundAStarFindTheExactNearestBoundary) {
   }
 }
 
+TEST(RegionIndex, PointsNearTheBoundaryFindTheExactNearestSegment) {
+  // Cells within a few rings of the boundary answer from their short list of segments: every
+  // point there, inside or out, must still get the nearest boundary point of all.
+  Polygon wavy;
+  for (int k = 0; k < 360; ++k) {
+    const double angle = k * 3.14159265358979 / 180, radius = 40.0 + 6.0 * std::sin(7 * angle);
+    wavy.outer.push_back({50 + radius * std::cos(angle), 50 + radius * std::sin(angle)});
+  }
+  wavy.holes = {{{45, 45}, {45, 55}, {55, 55}, {55, 45}}};
+  const Region region{wavy};
+  RegionIndex index(region, 1.25);
+  Rng rng(11);
+  for (int i = 0; i < 4000; ++i) {
+    const double angle = rng.uniform(0, 6.283185307179586);
+    const double radius = 40.0 + 6.0 * std::sin(7 * angle) + rng.uniform(-8.0, 8.0);
+    const Vec2 p = i % 8 ? Vec2{50 + radius * std::cos(angle), 50 + radius * std::sin(angle)}
+                         : Vec2{rng.uniform(42, 58), rng.uniform(42, 58)};  // around the hole
+    const RegionIndex::Query q = index.query(p, true);
+    ASSERT_TRUE(q.computed);
+    const auto exact = closestPointOnBoundary(p, region);
+    EXPECT_NEAR(q.distance, exact.distance, 1e-12) << p.x << "," << p.y;
+    EXPECT_NEAR(lengthSquared(q.closest - p), exact.distance * exact.distance, 1e-9) << p.x << "," << p.y;
+    EXPECT_EQ(q.inside, pointInRegion(p, region)) << p.x << "," << p.y;
+  }
+}
+
 TEST(RegionIndex, NonFinitePointHasNoClosestBoundary) {
   RegionIndex index(squareWithHole(), 7.0);
   EXPECT_FALSE(index.query({std::nan(""), 3}, true).computed);
