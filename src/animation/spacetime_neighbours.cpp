@@ -52,9 +52,8 @@ SpacetimeNeighbours::SpacetimeNeighbours(Layout layout, ThreadPool& pool) : layo
   nt_ = cellsAlong(area.hi.t - area.lo.t);
   const std::size_t cells = static_cast<std::size_t>(nx_) * ny_ * nt_;
   const std::size_t nt = layout_.triangles.size(), nv = layout_.vertexElement.size();
-  centroid_.assign(nt, {});
-  triangleBox_.assign(nt, {});
   triangleCell_.assign(nt, 0);
+  cellCorners_.assign(nt, {});
   cellStart_.assign(cells + 1, 0);
   cellTriangles_.assign(nt, 0);
   cellGroupStart_.assign(cells + 1, 0);
@@ -62,7 +61,6 @@ SpacetimeNeighbours::SpacetimeNeighbours(Layout layout, ThreadPool& pool) : layo
   vertexCell_.assign(nv, 0);
   candidatesOf_.assign(cells, {});
   moved_.assign(nv, 0.0);
-  triangleMoved_.assign(nt, 0.0);
   lists_.assign(nv, {});
   chunks_.resize((nv + kChunk - 1) / kChunk);
 }
@@ -79,7 +77,6 @@ void SpacetimeNeighbours::rebuild(const std::vector<Vec3>& origin) {
   assert(origin.size() == layout_.vertexElement.size());
   origin_ = origin;
   std::fill(moved_.begin(), moved_.end(), 0.0);
-  std::fill(triangleMoved_.begin(), triangleMoved_.end(), 0.0);
   buildGrid();
   buildCandidates();
   pool_.parallelFor(chunks_.size(), 1, [&](std::size_t begin, std::size_t end) {
@@ -101,14 +98,7 @@ bool SpacetimeNeighbours::track(const std::vector<Vec3>& positions) {
           if (moved_[v] > limit) past[c] = 1;
         }
   });
-  if (std::find(past.begin(), past.end(), 1) != past.end()) return true;
-  pool_.parallelFor(layout_.triangles.size(), 4096, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i) {
-      const auto& c = layout_.triangles[i];
-      triangleMoved_[i] = std::max({moved_[c[0]], moved_[c[1]], moved_[c[2]]});
-    }
-  });
-  return false;
+  return std::find(past.begin(), past.end(), 1) != past.end();
 }
 
 // The envelope triangles by cell of their centroid, and within a cell in runs of one element
@@ -118,10 +108,7 @@ void SpacetimeNeighbours::buildGrid() {
   pool_.parallelFor(nt, 1024, [&](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i) {
       const auto& tri = layout_.triangles[i];
-      const Vec3 a = origin_[tri[0]], b = origin_[tri[1]], c = origin_[tri[2]];
-      centroid_[i] = (a + b + c) / 3.0;
-      triangleBox_[i] = triangleBox(a, b, c);
-      triangleCell_[i] = cellOf(centroid_[i]);
+      triangleCell_[i] = cellOf((origin_[tri[0]] + origin_[tri[1]] + origin_[tri[2]]) / 3.0);
     }
   });
   // Counting sort by cell; stable, so each cell lists its triangles element by element.
@@ -131,16 +118,22 @@ void SpacetimeNeighbours::buildGrid() {
   for (std::size_t c = 0; c < cells; ++c) cellStart_[c + 1] += cellStart_[c];
   std::copy(cellStart_.begin(), cellStart_.end(), cellGroupStart_.begin());  // a moving cursor, for now
   for (std::size_t i = 0; i < nt; ++i) cellTriangles_[cellGroupStart_[triangleCell_[i]]++] = static_cast<int>(i);
+  pool_.parallelFor(nt, 1024, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t j = begin; j < end; ++j) {
+      const auto& tri = layout_.triangles[cellTriangles_[j]];
+      cellCorners_[j] = {origin_[tri[0]], origin_[tri[1]], origin_[tri[2]]};
+    }
+  });
   std::size_t groupCount = 0;
   for (std::size_t c = 0; c < cells; ++c) {
     cellGroupStart_[c] = static_cast<int>(groupCount);
     for (int k = cellStart_[c]; k < cellStart_[c + 1];) {
       const int element = layout_.triangleElement[cellTriangles_[k]];
       Group group{element, k, k, {}, {}};
-      while (group.end < cellStart_[c + 1] && layout_.triangleElement[cellTriangles_[group.end]] == element) {
-        const int tri = cellTriangles_[group.end++];
-        group.centre += centroid_[tri];
-        group.box.add(triangleBox_[tri]);
+      for (; group.end < cellStart_[c + 1] && layout_.triangleElement[cellTriangles_[group.end]] == element; ++group.end) {
+        const auto& [a, b, d] = cellCorners_[group.end];
+        group.centre += (a + b + d) / 3.0;
+        group.box.add(triangleBox(a, b, d));
       }
       group.centre = group.centre / static_cast<double>(group.end - group.begin);
       groups_[groupCount++] = group;
@@ -223,96 +216,103 @@ void SpacetimeNeighbours::buildCandidates() {
 // its nearest group centre.
 void SpacetimeNeighbours::buildLists(int chunkIndex) {
   Chunk& chunk = chunks_[chunkIndex];
-  chunk.near.clear();
-  chunk.distance.clear();
+  chunk.runs.clear();
+  chunk.listed.clear();
   chunk.far.clear();
   const double reach = layout_.cellSize, margin = layout_.margin;
-  const double listReach = reach + margin;
+  const double listReach = reach + margin, listReach2 = listReach * listReach;
   const double farReach2 = (layout_.shellReach + margin) * (layout_.shellReach + margin);
   // Elements near one vertex: a handful (they are at least a gap apart); more are ignored.
   constexpr int kElements = 32;
   struct Near { int element; double best2; };
   struct Far { int element; double d2; Vec3 centre; };
-  struct Listed { double d2; int triangle; };
-  constexpr int kListed = 256;
+  struct Sorted { double d2; int triangle; };
+  constexpr int kSorted = 256;
   std::array<Near, kElements> near;
   std::array<Far, kElements> far;
-  std::array<Listed, kListed> listed;
+  std::array<Sorted, kSorted> sorted;
   const int vBegin = chunkIndex * kChunk;
   const int vEnd = std::min(vBegin + kChunk, static_cast<int>(origin_.size()));
   for (int v = vBegin; v < vEnd; ++v) {
     VertexLists& lists = lists_[v];
-    lists.nearBegin = static_cast<int>(chunk.near.size());
+    lists.runBegin = static_cast<int>(chunk.runs.size());
+    lists.listedBegin = static_cast<int>(chunk.listed.size());
     lists.farBegin = static_cast<int>(chunk.far.size());
     if (!layout_.isSkin[v]) {
-      lists.nearEnd = lists.nearBegin, lists.farEnd = lists.farBegin;
+      lists.runEnd = lists.runBegin, lists.farEnd = lists.farBegin;
       continue;
     }
     const Vec3 x = origin_[v];
     const int self = layout_.vertexElement[v];
     const CellCandidates& around = candidatesOf_[vertexCell_[v]];
-    // Each element's nearest distance (capped at the list reach), groups nearest cells first.
+    // Each element's nearest distance (capped at the list reach), over the triangles of the
+    // groups that come within the list reach, each seen once (the listing below reuses them).
+    // Groups nearest first: once a group's box is farther than an element's best plus twice the
+    // margin, none of its triangles can be the nearest or listed.
     int elements = 0;
     chunk.passing.clear();
     for (int k = around.begin; k < around.end; ++k) {
       const Group& group = groups_[candidates_[k]];
       if (group.element == self) continue;
       const double bound2 = distanceSquared(group.box, x);
-      if (bound2 >= listReach * listReach) continue;
+      if (bound2 >= listReach2) continue;
       int e = 0;
       while (e < elements && near[e].element != group.element) ++e;
       if (e == elements) {
         if (elements == kElements) continue;
-        near[elements++] = {group.element, listReach * listReach};
+        near[elements++] = {group.element, listReach2};
       }
       chunk.passing.push_back({candidates_[k], e, bound2});
-      double& best2 = near[e].best2;
-      if (bound2 >= best2) continue;
+    }
+    for (std::size_t i = 1; i < chunk.passing.size(); ++i)  // a few: insertion sort (stable, no buffer)
+      for (std::size_t at = i; at > 0 && chunk.passing[at].bound2 < chunk.passing[at - 1].bound2; --at)
+        std::swap(chunk.passing[at], chunk.passing[at - 1]);
+    chunk.seen.clear();
+    for (const Passing& passing : chunk.passing) {
+      double& best2 = near[passing.slot].best2;
+      const double reach = std::min(std::sqrt(best2) + 2.0 * margin, listReach);
+      if (passing.bound2 > reach * reach) continue;
+      const Group& group = groups_[passing.group];
       for (int j = group.begin; j < group.end; ++j) {
-        const int tri = cellTriangles_[j];
-        if (distanceSquared(triangleBox_[tri], x) >= best2) continue;
-        const auto& c = layout_.triangles[tri];
-        best2 = std::min(best2, lengthSquared(closestPointOnTriangle(x, origin_[c[0]], origin_[c[1]], origin_[c[2]]) - x));
+        const auto& [a, b, c] = cellCorners_[j];
+        const double box2 = distanceSquared(triangleBox(a, b, c), x);
+        if (box2 > listReach2) continue;
+        double d2 = -1.0;  // not computed: its box is no nearer than the best
+        if (box2 < best2) best2 = std::min(best2, d2 = lengthSquared(closestPointOnTriangle(x, a, b, c) - x));
+        chunk.seen.push_back({j, passing.slot, box2, d2});
       }
     }
     // Per element: every triangle that may become its nearest before the next rebuild.
     for (int e = 0; e < elements; ++e) {
-      if (near[e].best2 >= listReach * listReach) continue;
+      if (near[e].best2 >= listReach2) continue;
       const double limit = std::min(std::sqrt(near[e].best2) + 2.0 * margin, listReach), limit2 = limit * limit;
-      const std::size_t header = chunk.near.size();
-      chunk.near.push_back(near[e].element);
-      chunk.near.push_back(0);  // the count, below
-      chunk.distance.insert(chunk.distance.end(), 2, 0.0);
+      const std::size_t first = chunk.listed.size();
       int count = 0;
-      for (const Passing& passing : chunk.passing) {
-        if (passing.slot != e || passing.bound2 > limit2) continue;
-        const Group& group = groups_[passing.group];
-        for (int j = group.begin; j < group.end; ++j) {
-          const int tri = cellTriangles_[j];
-          if (distanceSquared(triangleBox_[tri], x) > limit2) continue;
-          const auto& c = layout_.triangles[tri];
-          const double d2 = lengthSquared(closestPointOnTriangle(x, origin_[c[0]], origin_[c[1]], origin_[c[2]]) - x);
-          if (d2 > limit2) continue;
-          if (count == kListed) {  // beyond the sorted ones (not seen in practice): still listed
-            chunk.near.push_back(tri);
-            chunk.distance.push_back(0.0);
-            continue;
-          }
-          // Nearest first (ties by triangle), so that gather prunes early.
-          int at = count++;
-          for (; at > 0 && (listed[at - 1].d2 > d2 || (listed[at - 1].d2 == d2 && listed[at - 1].triangle > tri)); --at)
-            listed[at] = listed[at - 1];
-          listed[at] = {d2, tri};
+      for (const Seen& seen : chunk.seen) {
+        if (seen.slot != e || seen.box2 > limit2) continue;
+        double d2 = seen.d2;
+        if (d2 < 0.0) {
+          const auto& [a, b, c] = cellCorners_[seen.j];
+          d2 = lengthSquared(closestPointOnTriangle(x, a, b, c) - x);
         }
+        if (d2 > limit2) continue;
+        const int tri = cellTriangles_[seen.j];
+        if (count == kSorted) {  // beyond the sorted ones (not seen in practice): still listed
+          chunk.listed.push_back({0.0, layout_.triangles[tri]});
+          continue;
+        }
+        // Nearest first (ties by triangle), so that gather prunes early.
+        int at = count++;
+        for (; at > 0 && (sorted[at - 1].d2 > d2 || (sorted[at - 1].d2 == d2 && sorted[at - 1].triangle > tri)); --at)
+          sorted[at] = sorted[at - 1];
+        sorted[at] = {d2, tri};
       }
       // Nearest first after any overflow (distance 0), so gather stops at the first entry out of reach.
-      for (int i = 0; i < count; ++i) {
-        chunk.near.push_back(listed[i].triangle);
-        chunk.distance.push_back(std::sqrt(listed[i].d2));
-      }
-      chunk.near[header + 1] = static_cast<int>(chunk.near.size() - header - 2);
+      for (int i = 0; i < count; ++i)
+        chunk.listed.push_back({std::sqrt(sorted[i].d2), layout_.triangles[sorted[i].triangle]});
+      chunk.runs.push_back({near[e].element, static_cast<int>(chunk.listed.size() - first)});
     }
-    lists.nearEnd = static_cast<int>(chunk.near.size());
+    lists.runEnd = static_cast<int>(chunk.runs.size());
     // Per element in the shell: its nearest group centre there.
     int farCount = 0;
     for (int k = around.shellBegin; k < around.shellEnd; ++k) {
@@ -341,21 +341,22 @@ void SpacetimeNeighbours::gather(int v, const std::vector<Vec3>& positions, Hits
   const Chunk& chunk = chunks_[v / kChunk];
   const VertexLists& lists = lists_[v];
   const double margin = layout_.margin + kRoundingSlack, moved = moved_[v] + kRoundingSlack;
-  for (int k = lists.nearBegin; k < lists.nearEnd;) {
-    const int element = chunk.near[k], count = chunk.near[k + 1];
-    const int* triangles = &chunk.near[k + 2];
-    const double* distanceAtOrigin = &chunk.distance[k + 2];
-    k += 2 + count;
+  const Listed* listed = chunk.listed.data() + lists.listedBegin;
+  for (int r = lists.runBegin; r < lists.runEnd; ++r) {
+    const auto [element, count] = chunk.runs[r];
+    const Listed* run = listed;
+    listed += count;
     double best = reach2;
     Vec3 nearest;
     for (int i = 0; i < count; ++i) {
       // Lower bounds on the triangle's distance now: the margin's, which grows along the list
-      // (so none after this one can be nearer), then the moves'.
-      const double bound = distanceAtOrigin[i] - margin;
+      // (so none after this one can be nearer), then the moves' (its own and its corners').
+      const double distanceAtOrigin = run[i].distance;
+      const double bound = distanceAtOrigin - margin;
       if (bound > 0.0 && bound * bound >= best) break;
-      const double tighter = distanceAtOrigin[i] - moved - triangleMoved_[triangles[i]];
+      const auto& c = run[i].corners;
+      const double tighter = distanceAtOrigin - moved - std::max({moved_[c[0]], moved_[c[1]], moved_[c[2]]});
       if (tighter > 0.0 && tighter * tighter >= best) continue;
-      const auto& c = layout_.triangles[triangles[i]];
       const Vec3 a = positions[c[0]], b = positions[c[1]], d = positions[c[2]];
       if (distanceSquared(triangleBox(a, b, d), x) >= best) continue;
       const Vec3 q = closestPointOnTriangle(x, a, b, d);

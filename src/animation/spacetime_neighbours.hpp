@@ -77,15 +77,21 @@ class SpacetimeNeighbours {
   struct Group { int element, begin, end; Vec3 centre; Box3 box; };  // one element's triangles in one cell
   struct CellCandidates { int begin = 0, end = 0, shellBegin = 0, shellEnd = 0; };
   struct Far { Vec3 centre; int element; };
-  // A vertex's lists: `near` holds runs [element, count, triangle…], `far` one centre per element.
-  struct VertexLists { int nearBegin = 0, nearEnd = 0, farBegin = 0, farEnd = 0; };
-  // A group of another element that comes within the list reach of the vertex being listed.
+  // A vertex's lists: per other element within reach a run of listed triangles (nearest
+  // first), and per element in the shell one centre.
+  struct Run { int element, count; };
+  // A listed triangle: its distance at the origin (0 past the sorted ones), and its corners,
+  // so that `gather` reads no triangle table.
+  struct Listed { double distance; std::array<int, 3> corners; };
+  struct VertexLists { int runBegin = 0, runEnd = 0, listedBegin = 0, farBegin = 0, farEnd = 0; };
+  // A triangle within the list reach of the vertex being listed: its place in the cell order,
+  // the element's slot, its box's squared distance and its own (< 0: not computed).
+  struct Seen { int j, slot; double box2, d2; };
+  // A group of another element within the list reach of the vertex being listed.
   struct Passing { int group, slot; double bound2; };
-  // `distance[k]`, beside each listed triangle near[k], is its distance at the origin (0 beside
-  // the headers, and beside triangles listed past the sorted ones).
   struct Chunk {
-    std::vector<int> near; std::vector<double> distance; std::vector<Far> far;
-    std::vector<Passing> passing;  // scratch for one vertex at a time
+    std::vector<Run> runs; std::vector<Listed> listed; std::vector<Far> far;
+    std::vector<Passing> passing; std::vector<Seen> seen;  // scratch for one vertex at a time
   };
   static constexpr int kChunk = 512;  // vertices per chunk
 
@@ -99,18 +105,17 @@ class SpacetimeNeighbours {
   std::vector<Vec3> origin_;
   int nx_ = 0, ny_ = 0, nt_ = 0;
   Vec3 gridOrigin_;
-  // Grid of the envelope at the origin.
-  std::vector<Vec3> centroid_;
-  std::vector<Box3> triangleBox_;
+  // Grid of the envelope at the origin. `cellCorners_[j]` holds the corners of triangle
+  // cellTriangles_[j]: the rebuild reads a group's triangles from one run of memory.
   std::vector<int> triangleCell_, cellStart_, cellTriangles_, cellGroupStart_;
+  std::vector<std::array<Vec3, 3>> cellCorners_;
   std::vector<Group> groups_;
   // Per cell holding a skin vertex: the groups within reach of the margin, then those of the
   // outer shell.
   std::vector<int> vertexCell_, queriedCells_, candidates_;
   std::vector<CellCandidates> candidatesOf_;
-  // How far each skin vertex, and the farthest-moved corner of each triangle, has moved from
-  // the origin (as `track` last measured it).
-  std::vector<double> moved_, triangleMoved_;
+  // How far each skin vertex has moved from the origin (as `track` last measured it).
+  std::vector<double> moved_;
   std::vector<std::uint8_t> stalePerChunk_;  // scratch for track
   // The lists.
   std::vector<VertexLists> lists_;

@@ -119,8 +119,9 @@ int SpacetimeSimulation::projectInside() {
     if (e.leavesContainer) continue;
     const auto begin = position_.begin() + e.vertexBegin;
     for (auto x = begin; x != begin + static_cast<std::ptrdiff_t>(e.verticesPerSlice) * slices_; ++x) {
-      const RegionIndex::Query q = container_.query(spatial(*x), true);
+      RegionIndex::Query q = container_.query(spatial(*x), false);
       if (q.inside) continue;
+      if (!q.computed) q = container_.query(spatial(*x), true);
       const Vec2 p = q.closest + normalized(q.closest - spatial(*x)) * kInsideMargin;
       x->x = p.x, x->y = p.y;
       ++moved;
@@ -149,6 +150,7 @@ void SpacetimeSimulation::finalize(const Box& area) {
       emit(s.b, SpringEnd{s.a, s.stiffness});
     }
   });
+  springRest_.assign(springsAt_.entries.size(), 0.0);
   pending_.clear();
   pending_.shrink_to_fit();
 
@@ -171,6 +173,8 @@ void SpacetimeSimulation::finalize(const Box& area) {
   sliceOutsideDepth_.assign(ns, 0.0);
   sliceArea_.assign(ns, 0.0);
   previousGrowth_.assign(ns, 0.0);
+  restGrowth_.assign(ns, std::numeric_limits<double>::quiet_NaN());  // none yet: all computed in the first step
+  growthChanged_.assign(ns, 1);
   unguidedGrowth_.assign(elements_.size(), 0.0);
 
   // The neighbour search over the container's box × [0, timeLength].
@@ -204,33 +208,49 @@ void SpacetimeSimulation::computeReferencePoints(std::size_t begin, std::size_t 
 
 // Whether x lies inside `element`'s cross-section at time x.t: the skin rings of the two
 // slices around x.t, interpolated as the renderer does (5.6).
-bool SpacetimeSimulation::insideElementAt(int element, Vec3 x) const {
+bool SpacetimeSimulation::insideElementAt(int element, Vec3 x, CrossSections& cache) const {
   const ElementRecord& e = elements_[element];
+  const int nb = e.mesh->boundaryCount;
+  auto inside = [&](auto&& ringPoint) {  // crossings of a ray from x toward +x
+    bool in = false;
+    Vec2 prev = ringPoint(nb - 1);
+    for (int k = 0; k < nb; ++k) {
+      const Vec2 here = ringPoint(k);
+      if ((here.y > x.y) != (prev.y > x.y) && x.x < (prev.x - here.x) * (x.y - here.y) / (prev.y - here.y) + here.x)
+        in = !in;
+      prev = here;
+    }
+    return in;
+  };
+  for (int slot = 0; slot < CrossSections::kEntries; ++slot)
+    if (const CrossSections::Entry& entry = cache.entries[slot]; entry.element == element && entry.t == x.t) {
+      const Vec2* ring = cache.rings[slot].data();
+      return entry.within && inside([&](int k) { return ring[k]; });
+    }
   const double* times = &sliceTime_[e.sliceBegin];
-  if (x.t < times[0] || x.t > times[slices_ - 1]) return false;
-  int s = static_cast<int>(std::upper_bound(times, times + slices_, x.t) - times) - 1;
+  const bool within = x.t >= times[0] && x.t <= times[slices_ - 1];
+  int s = within ? static_cast<int>(std::upper_bound(times, times + slices_, x.t) - times) - 1 : 0;
   s = std::clamp(s, 0, slices_ - 2);
   const double span = times[s + 1] - times[s];
   const double w = span > 0.0 ? std::clamp((x.t - times[s]) / span, 0.0, 1.0) : 0.0;
   const int lower = e.vertexBegin + s * e.verticesPerSlice, upper = lower + e.verticesPerSlice;
-  const int nb = e.mesh->boundaryCount;
   auto ringPoint = [&](int k) {
     const Vec3 a = position_[lower + k], b = position_[upper + k];
     return Vec2{a.x + (b.x - a.x) * w, a.y + (b.y - a.y) * w};
   };
-  bool inside = false;
-  Vec2 prev = ringPoint(nb - 1);
-  for (int k = 0; k < nb; ++k) {
-    const Vec2 here = ringPoint(k);
-    if ((here.y > x.y) != (prev.y > x.y) && x.x < (prev.x - here.x) * (x.y - here.y) / (prev.y - here.y) + here.x)
-      inside = !inside;
-    prev = here;
-  }
-  return inside;
+  if (nb > CrossSections::kMaxRing) return within && inside(ringPoint);  // too long to keep
+  const int slot = cache.next;
+  cache.next = (slot + 1) % CrossSections::kEntries;
+  cache.entries[slot] = {element, x.t, within};
+  Vec2* ring = cache.rings[slot].data();
+  if (within)
+    for (int k = 0; k < nb; ++k) ring[k] = ringPoint(k);
+  return within && inside([&](int k) { return ring[k]; });
 }
 
 void SpacetimeSimulation::computeForces(std::size_t begin, std::size_t end) {
   const SimulationParameters& P = parameters_;
+  CrossSections crossSections;
   for (std::size_t v = begin; v < end; ++v) {
     const int slice = sliceOf_[v];
     const ElementRecord& element = elements_[sliceElement_[slice]];
@@ -244,7 +264,7 @@ void SpacetimeSimulation::computeForces(std::size_t begin, std::size_t end) {
       SpacetimeNeighbours::Hits hits;
       neighbours_->gather(static_cast<int>(v), position_, hits);
       for (int k = 0; k < hits.size() && !inside; ++k)
-        if (hits[k].exact) inside = insideElementAt(hits[k].element, x);
+        if (hits[k].exact) inside = insideElementAt(hits[k].element, x, crossSections);
       if (inside) {
         // Eq. 4.4 in the slice: every incident triangle pulls the vertex toward its centroid.
         for (const std::array<int, 3>& tri : trianglesAt_.of(v)) {
@@ -261,10 +281,17 @@ void SpacetimeSimulation::computeForces(std::size_t begin, std::size_t end) {
     }
     insideOther_[v] = inside ? 1 : 0;
 
-    // Eq. 4.3: springs, rest lengths from the reference shapes at the current growth.
+    // Eq. 4.3: springs, rest lengths from the reference shapes at the current growth (kept
+    // while neither end's slice grows).
     const Vec3 r = referencePoint_[v];
-    for (const SpringEnd& spring : springsAt_.of(v))
-      f += forces::edge(x, position_[spring.other], distance(r, referencePoint_[spring.other]), spring.stiffness);
+    const std::span<const SpringEnd> ends = springsAt_.of(v);
+    double* rest = springRest_.data() + springsAt_.start[v];
+    for (std::size_t k = 0; k < ends.size(); ++k) {
+      const SpringEnd& spring = ends[k];
+      if (growthChanged_[slice] || growthChanged_[sliceOf_[spring.other]])
+        rest[k] = distance(r, referencePoint_[spring.other]);
+      f += forces::edge(x, position_[spring.other], rest[k], spring.stiffness);
+    }
 
     // Eq. 4.5 in (x, y): the container is extruded along t.
     const Vec2 xy = spatial(x);
@@ -439,6 +466,10 @@ void SpacetimeSimulation::step() {
   assert(finalized_ && "step only after finalize");
   const std::size_t nv = position_.size(), ns = growth_.size();
   pool_.parallelFor(nv, 2048, [&](std::size_t b, std::size_t e) { computeReferencePoints(b, e); });
+  for (std::size_t s = 0; s < ns; ++s) {
+    growthChanged_[s] = growth_[s] != restGrowth_[s] ? 1 : 0;
+    restGrowth_[s] = growth_[s];
+  }
   if (neighbours_->track(position_)) neighbours_->rebuild(position_);
   pool_.parallelFor(nv, 256, [&](std::size_t b, std::size_t e) { computeForces(b, e); });
   pool_.parallelFor(nv, 4096, [&](std::size_t b, std::size_t e) { integrate(b, e); });
@@ -481,6 +512,7 @@ void SpacetimeSimulation::restoreState(int iteration, std::vector<Vec3> position
   growth_ = std::move(growth);
   assert(previousGrowth.size() == growth_.size());
   previousGrowth_ = std::move(previousGrowth);
+  std::fill(restGrowth_.begin(), restGrowth_.end(), std::numeric_limits<double>::quiet_NaN());  // all computed afresh
   for (const ElementRecord& e : elements_)
     for (int s = 0; s < slices_; ++s) sliceTime_[e.sliceBegin + s] = position_[e.vertexBegin + s * e.verticesPerSlice].t;
   computeSliceCentres();

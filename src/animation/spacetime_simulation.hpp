@@ -11,6 +11,7 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "pak/animation/spacetime_parameters.hpp"
@@ -111,7 +112,16 @@ class SpacetimeSimulation {
     bool leavesContainer;
   };
   void computeReferencePoints(std::size_t begin, std::size_t end);
-  bool insideElementAt(int element, Vec3 x) const;
+  // The cross-sections insideElementAt last interpolated. The skin vertices of one slice share
+  // their time, so consecutive queries ask for the same few: each is interpolated once.
+  struct CrossSections {
+    static constexpr int kEntries = 4, kMaxRing = 256;
+    struct Entry { int element = -1; double t = 0.0; bool within = false; };
+    std::array<Entry, kEntries> entries;
+    std::array<std::array<Vec2, kMaxRing>, kEntries> rings;
+    int next = 0;
+  };
+  bool insideElementAt(int element, Vec3 x, CrossSections& cache) const;
   void computeForces(std::size_t begin, std::size_t end);
   void integrate(std::size_t begin, std::size_t end);
   void applySliceConstraints(std::size_t elementBegin, std::size_t elementEnd);
@@ -148,11 +158,16 @@ class SpacetimeSimulation {
   // Springs by vertex (each spring appears at both ends).
   struct SpringEnd { int other; double stiffness; };
   VertexAdjacency<SpringEnd> springsAt_;
+  std::vector<double> springRest_;  // per spring end: its rest length, as last computed
   // Incident in-slice triangles by vertex (their corners), for the overlap force.
   VertexAdjacency<std::array<int, 3>> trianglesAt_;
   // Per global slice.
   std::vector<int> sliceElement_, sliceVertexBegin_;
   std::vector<double> growth_, previousGrowth_, sliceTime_, restTime_;
+  // The growth the kept rest lengths were computed at (NaN: none), and whether it has changed
+  // since the last step: then the slice's rest lengths are computed again.
+  std::vector<double> restGrowth_;
+  std::vector<std::uint8_t> growthChanged_;
   std::vector<double> unguidedGrowth_;  // scratch for keepGuidedUp, one per element
   std::vector<Vec2> referenceCentre_, sliceCentre_;
   std::vector<std::uint8_t> sliceOverlapping_;
