@@ -57,10 +57,12 @@ PackingSetup preparePacking(const Scene& scene, const Library& library, const Pa
 }
 
 void indexContainers(PackingSetup& setup, double cellSize) {
+  // Every simulation step asks these for the nearest wall of many vertices.
   setup.containerIndex = RegionIndex(setup.container, cellSize);
+  setup.containerIndex.listNearSegments();
   setup.partIndexes.clear();
   if (setup.severalParts())
-    for (const Region& part : setup.parts) setup.partIndexes.emplace_back(part, cellSize);
+    for (const Region& part : setup.parts) setup.partIndexes.emplace_back(part, cellSize).listNearSegments();
 }
 
 std::vector<const RegionIndex*> PackingSetup::partIndexPointers() const {

@@ -95,7 +95,6 @@ RegionIndex::RegionIndex(const Region& input, double cellSize) : cell_(cellSize)
     for (int i = 0; i < nx_; ++i) { relax(i, j, -1, 0); relax(i, j, -1, -1); relax(i, j, 0, -1); relax(i, j, 1, -1); }
   for (int j = ny_ - 1; j >= 0; --j)
     for (int i = nx_ - 1; i >= 0; --i) { relax(i, j, 1, 0); relax(i, j, 1, 1); relax(i, j, 0, 1); relax(i, j, -1, 1); }
-  listNearSegments();
 }
 
 // Every point of a cell is within half its diagonal of the centre, so no nearer to the
@@ -104,6 +103,7 @@ RegionIndex::RegionIndex(const Region& input, double cellSize) : cell_(cellSize)
 // search meets them (first meeting), so that among equally near segments the list yields the
 // one the search would.
 void RegionIndex::listNearSegments() {
+  if (segments_.empty() || !nearStart_.empty()) return;
   const std::size_t cells = cellState_.size();
   std::vector<double> bound(cells, 0.0);
   for (std::size_t c = 0; c < cells; ++c)  // before any list exists: by the ring search

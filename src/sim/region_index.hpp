@@ -2,9 +2,10 @@
 // Fast, exact "is this point inside the region, and where is the nearest boundary point?"
 // for a static region (a container, or fixed obstacles). Cells that no boundary segment
 // touches answer inside/outside from a precomputed flag; the rest search outward ring by ring.
-// A cell within a few rings of the boundary keeps the segments that can be nearest to a point
-// in it, in the order that search meets them, so a query there scans a short list instead and
-// finds the same segment.
+// For an index that answers many queries (a simulation's container), `listNearSegments` makes
+// each cell within a few rings of the boundary keep the segments that can be nearest to a
+// point in it, in the order that search meets them, so a query there scans a short list
+// instead and finds the same segment.
 #include <cstdint>
 #include <vector>
 
@@ -32,13 +33,15 @@ class RegionIndex {
   // when it only asks "inside and farther than d?".
   double insideDistanceBound(Vec2 p) const;
   bool empty() const { return segments_.empty(); }
+  // Lists the near segments of every cell within kListedRings of the boundary (see above):
+  // the same answers, faster, for a few hundred queries per cell of boundary to pay back.
+  void listNearSegments();
 
  private:
   struct Segment { Vec2 a, b; Vec2 normal; Vec2 normalA, normalB; };  // outward normals
   Query closestAround(Vec2 p) const;
   template <typename Visit>
   void visitRing(int ci, int cj, int r, Visit&& visit) const;
-  void listNearSegments();
   template <typename VisitCell>
   void closestFromOffGrid(Vec2 p, VisitCell&& visitCell, const double& best) const;
   int cellIndex(int i, int j) const { return j * nx_ + i; }

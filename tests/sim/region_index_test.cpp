@@ -97,8 +97,9 @@ TEST(RegionIndex, FarPointsAroundAStarFindTheExactNearestBoundary) {
 }
 
 TEST(RegionIndex, PointsNearTheBoundaryFindTheExactNearestSegment) {
-  // Cells within a few rings of the boundary answer from their short list of segments: every
-  // point there, inside or out, must still get the nearest boundary point of all.
+  // With near-segment lists, cells within a few rings of the boundary answer from a short list
+  // of segments: every point there, inside or out, must still get the nearest boundary point
+  // of all, the very one the ring search finds.
   Polygon wavy;
   for (int k = 0; k < 360; ++k) {
     const double angle = k * 3.14159265358979 / 180, radius = 40.0 + 6.0 * std::sin(7 * angle);
@@ -106,7 +107,9 @@ TEST(RegionIndex, PointsNearTheBoundaryFindTheExactNearestSegment) {
   }
   wavy.holes = {{{45, 45}, {45, 55}, {55, 55}, {55, 45}}};
   const Region region{wavy};
+  const RegionIndex searched(region, 1.25);
   RegionIndex index(region, 1.25);
+  index.listNearSegments();
   Rng rng(11);
   for (int i = 0; i < 4000; ++i) {
     const double angle = rng.uniform(0, 6.283185307179586);
@@ -119,6 +122,9 @@ TEST(RegionIndex, PointsNearTheBoundaryFindTheExactNearestSegment) {
     EXPECT_NEAR(q.distance, exact.distance, 1e-12) << p.x << "," << p.y;
     EXPECT_NEAR(lengthSquared(q.closest - p), exact.distance * exact.distance, 1e-9) << p.x << "," << p.y;
     EXPECT_EQ(q.inside, pointInRegion(p, region)) << p.x << "," << p.y;
+    const RegionIndex::Query s = searched.query(p, true);  // the ring search: the same bits
+    EXPECT_EQ(q.closest, s.closest) << p.x << "," << p.y;
+    EXPECT_EQ(q.distance, s.distance) << p.x << "," << p.y;
   }
 }
 
