@@ -4,7 +4,8 @@
 # (target: ≥ 30 elements, ≥ 50,000 vertices, ≤ 10 minutes, ≤ 2 GB). Each scene runs with 1 and
 # 2 threads (the result is the same; the time shows the scaling). Rows go to
 # bench/animate-results.csv: vertices, springs, iterations, simulation seconds (median),
-# seconds per iteration, peak memory, fill, frames with overlaps.
+# seconds per iteration, peak memory, fill, frames with overlaps. ANIMATE_SCENES (names) and
+# ANIMATE_THREADS (default "1 2") pick a part of it.
 set -euo pipefail
 source "$(dirname "$0")/common.sh"
 csv=bench/animate-results.csv
@@ -24,7 +25,8 @@ scenes=("stars|examples/animate/stars/disc.svg|examples/animate/stars/stars.json
         "stars-32|examples/animate/stars/disc.svg|$big")
 for entry in "${scenes[@]}"; do
   IFS='|' read -r name container animation <<< "$entry"
-  for threads in 1 2; do
+  [[ " ${ANIMATE_SCENES:-stars chase stars-32} " == *" $name "* ]] || continue
+  for threads in ${ANIMATE_THREADS:-1 2}; do
     sims=()
     for run in $(seq "$runs"); do
       report="$work/animate-$name-$threads-$run.json"
