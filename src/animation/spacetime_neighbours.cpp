@@ -222,6 +222,11 @@ void SpacetimeNeighbours::buildLists(int chunkIndex) {
   const double reach = layout_.cellSize, margin = layout_.margin;
   const double listReach = reach + margin, listReach2 = listReach * listReach;
   const double farReach2 = (layout_.shellReach + margin) * (layout_.shellReach + margin);
+  // How far (squared) an element's triangles are listed, from its nearest one's distance.
+  auto listLimit2 = [&](double best2) {
+    const double limit = std::min(std::sqrt(best2) + 2.0 * margin, listReach);
+    return limit * limit;
+  };
   // Elements near one vertex: a handful (they are at least a gap apart); more are ignored.
   constexpr int kElements = 32;
   struct Near { int element; double best2; };
@@ -270,8 +275,7 @@ void SpacetimeNeighbours::buildLists(int chunkIndex) {
     chunk.seen.clear();
     for (const Passing& passing : chunk.passing) {
       double& best2 = near[passing.slot].best2;
-      const double reach = std::min(std::sqrt(best2) + 2.0 * margin, listReach);
-      if (passing.bound2 > reach * reach) continue;
+      if (passing.bound2 > listLimit2(best2)) continue;
       const Group& group = groups_[passing.group];
       for (int j = group.begin; j < group.end; ++j) {
         const auto& [a, b, c] = cellCorners_[j];
@@ -285,7 +289,7 @@ void SpacetimeNeighbours::buildLists(int chunkIndex) {
     // Per element: every triangle that may become its nearest before the next rebuild.
     for (int e = 0; e < elements; ++e) {
       if (near[e].best2 >= listReach2) continue;
-      const double limit = std::min(std::sqrt(near[e].best2) + 2.0 * margin, listReach), limit2 = limit * limit;
+      const double limit2 = listLimit2(near[e].best2);
       const std::size_t first = chunk.listed.size();
       int count = 0;
       for (const Seen& seen : chunk.seen) {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "pak/geom/polygon.hpp"
 #include "sim/forces.hpp"
 
 namespace pak {
@@ -173,8 +174,8 @@ void SpacetimeSimulation::finalize(const Box& area) {
   sliceOutsideDepth_.assign(ns, 0.0);
   sliceArea_.assign(ns, 0.0);
   previousGrowth_.assign(ns, 0.0);
-  restGrowth_.assign(ns, std::numeric_limits<double>::quiet_NaN());  // none yet: all computed in the first step
   growthChanged_.assign(ns, 1);
+  restLengthsStale_ = true;
   unguidedGrowth_.assign(elements_.size(), 0.0);
 
   // The neighbour search over the container's box × [0, timeLength].
@@ -211,41 +212,34 @@ void SpacetimeSimulation::computeReferencePoints(std::size_t begin, std::size_t 
 bool SpacetimeSimulation::insideElementAt(int element, Vec3 x, CrossSections& cache) const {
   const ElementRecord& e = elements_[element];
   const int nb = e.mesh->boundaryCount;
-  auto inside = [&](auto&& ringPoint) {  // crossings of a ray from x toward +x
-    bool in = false;
-    Vec2 prev = ringPoint(nb - 1);
-    for (int k = 0; k < nb; ++k) {
-      const Vec2 here = ringPoint(k);
-      if ((here.y > x.y) != (prev.y > x.y) && x.x < (prev.x - here.x) * (x.y - here.y) / (prev.y - here.y) + here.x)
-        in = !in;
-      prev = here;
-    }
-    return in;
-  };
+  const Vec2 p = spatial(x);
   for (int slot = 0; slot < CrossSections::kEntries; ++slot)
     if (const CrossSections::Entry& entry = cache.entries[slot]; entry.element == element && entry.t == x.t) {
       const Vec2* ring = cache.rings[slot].data();
-      return entry.within && inside([&](int k) { return ring[k]; });
+      return entry.within && pointInRingOf(p, nb, [&](std::size_t k) { return ring[k]; });
     }
   const double* times = &sliceTime_[e.sliceBegin];
   const bool within = x.t >= times[0] && x.t <= times[slices_ - 1];
-  int s = within ? static_cast<int>(std::upper_bound(times, times + slices_, x.t) - times) - 1 : 0;
-  s = std::clamp(s, 0, slices_ - 2);
+  const bool kept = nb <= CrossSections::kMaxRing;  // a longer ring is interpolated as it is read
+  Vec2* ring = nullptr;
+  if (kept) {
+    const int slot = cache.next;
+    cache.next = (slot + 1) % CrossSections::kEntries;
+    cache.entries[slot] = {element, x.t, within};
+    ring = cache.rings[slot].data();
+  }
+  if (!within) return false;
+  const int s = std::clamp(static_cast<int>(std::upper_bound(times, times + slices_, x.t) - times) - 1, 0, slices_ - 2);
   const double span = times[s + 1] - times[s];
   const double w = span > 0.0 ? std::clamp((x.t - times[s]) / span, 0.0, 1.0) : 0.0;
   const int lower = e.vertexBegin + s * e.verticesPerSlice, upper = lower + e.verticesPerSlice;
-  auto ringPoint = [&](int k) {
+  auto ringPoint = [&](std::size_t k) {
     const Vec3 a = position_[lower + k], b = position_[upper + k];
     return Vec2{a.x + (b.x - a.x) * w, a.y + (b.y - a.y) * w};
   };
-  if (nb > CrossSections::kMaxRing) return within && inside(ringPoint);  // too long to keep
-  const int slot = cache.next;
-  cache.next = (slot + 1) % CrossSections::kEntries;
-  cache.entries[slot] = {element, x.t, within};
-  Vec2* ring = cache.rings[slot].data();
-  if (within)
-    for (int k = 0; k < nb; ++k) ring[k] = ringPoint(k);
-  return within && inside([&](int k) { return ring[k]; });
+  if (!kept) return pointInRingOf(p, nb, ringPoint);
+  for (int k = 0; k < nb; ++k) ring[k] = ringPoint(k);
+  return pointInRingOf(p, nb, [&](std::size_t k) { return ring[k]; });
 }
 
 void SpacetimeSimulation::computeForces(std::size_t begin, std::size_t end) {
@@ -466,10 +460,9 @@ void SpacetimeSimulation::step() {
   assert(finalized_ && "step only after finalize");
   const std::size_t nv = position_.size(), ns = growth_.size();
   pool_.parallelFor(nv, 2048, [&](std::size_t b, std::size_t e) { computeReferencePoints(b, e); });
-  for (std::size_t s = 0; s < ns; ++s) {
-    growthChanged_[s] = growth_[s] != restGrowth_[s] ? 1 : 0;
-    restGrowth_[s] = growth_[s];
-  }
+  // previousGrowth_ is the growth the last step's rest lengths were computed at.
+  for (std::size_t s = 0; s < ns; ++s) growthChanged_[s] = restLengthsStale_ || growth_[s] != previousGrowth_[s] ? 1 : 0;
+  restLengthsStale_ = false;
   if (neighbours_->track(position_)) neighbours_->rebuild(position_);
   pool_.parallelFor(nv, 256, [&](std::size_t b, std::size_t e) { computeForces(b, e); });
   pool_.parallelFor(nv, 4096, [&](std::size_t b, std::size_t e) { integrate(b, e); });
@@ -512,7 +505,7 @@ void SpacetimeSimulation::restoreState(int iteration, std::vector<Vec3> position
   growth_ = std::move(growth);
   assert(previousGrowth.size() == growth_.size());
   previousGrowth_ = std::move(previousGrowth);
-  std::fill(restGrowth_.begin(), restGrowth_.end(), std::numeric_limits<double>::quiet_NaN());  // all computed afresh
+  restLengthsStale_ = true;  // none kept for this state
   for (const ElementRecord& e : elements_)
     for (int s = 0; s < slices_; ++s) sliceTime_[e.sliceBegin + s] = position_[e.vertexBegin + s * e.verticesPerSlice].t;
   computeSliceCentres();

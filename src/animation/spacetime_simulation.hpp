@@ -164,10 +164,11 @@ class SpacetimeSimulation {
   // Per global slice.
   std::vector<int> sliceElement_, sliceVertexBegin_;
   std::vector<double> growth_, previousGrowth_, sliceTime_, restTime_;
-  // The growth the kept rest lengths were computed at (NaN: none), and whether it has changed
-  // since the last step: then the slice's rest lengths are computed again.
-  std::vector<double> restGrowth_;
+  // Per slice, whether its growth changed since the last step (then its springs' kept rest
+  // lengths are computed again), and whether none is kept yet (before the first step, after a
+  // restore).
   std::vector<std::uint8_t> growthChanged_;
+  bool restLengthsStale_ = true;
   std::vector<double> unguidedGrowth_;  // scratch for keepGuidedUp, one per element
   std::vector<Vec2> referenceCentre_, sliceCentre_;
   std::vector<std::uint8_t> sliceOverlapping_;

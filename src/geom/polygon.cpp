@@ -54,18 +54,7 @@ double polylineLength(const Polyline& line) {
 }
 
 bool pointInRing(Vec2 p, const Ring& ring) {
-  const std::size_t n = ring.size();
-  if (n < 3) return false;
-  bool inside = false;
-  for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
-    const Vec2 a = ring[i], b = ring[j];
-    // Half-open rule on y so a vertex on the ray is counted once.
-    if ((a.y > p.y) != (b.y > p.y)) {
-      const double x = a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
-      if (p.x < x) inside = !inside;
-    }
-  }
-  return inside;
+  return pointInRingOf(p, ring.size(), [&](std::size_t i) { return ring[i]; });
 }
 
 bool pointInPolygon(Vec2 p, const Polygon& polygon) {
