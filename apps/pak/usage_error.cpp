@@ -1,7 +1,8 @@
 #include "usage_error.hpp"
 
-#include <regex>
+#include <cctype>
 #include <sstream>
+#include <string_view>
 
 namespace pak::cli {
 namespace {
@@ -21,31 +22,58 @@ const CLI::Option* findOption(const CLI::App& app, const std::string& name) {
   return nullptr;
 }
 
+// Whether `text` starts with `prefix`; if so, drops it.
+bool consume(std::string_view& text, std::string_view prefix) {
+  if (text.substr(0, prefix.size()) != prefix) return false;
+  text.remove_prefix(prefix.size());
+  return true;
+}
+
+// One word: not empty, no white space (an option's name as CLI11 prints it).
+bool isWord(std::string_view text) {
+  if (text.empty()) return false;
+  for (char c : text)
+    if (std::isspace(static_cast<unsigned char>(c))) return false;
+  return true;
+}
+
 }  // namespace
 
 std::string usageErrorMessage(const CLI::App& app, const CLI::ParseError& error) {
   std::string text = error.what();
   // A hidden option (an old spelling) has no name for CLI11 to put first.
   if (text.rfind(": ", 0) == 0) text.erase(0, 2);
-  static const std::regex conversion(R"(^Could not convert: (\S+) = (.*)$)");
-  static const std::regex required(R"(^(-\S+) is required$)");
-  static const std::regex repeated(R"(^(\S+): At Most 1 required but received \d+$)");
-  static const std::regex unexpected(R"(^The following arguments? (?:was|were) not expected: (.*)$)");
-  std::smatch match;
-  if (std::regex_match(text, match, conversion)) {
-    const CLI::Option* option = findOption(app, match[1].str());
-    const std::string kind = kindOf(option ? option->get_type_name() : "");
-    return match[1].str() + ": cannot read '" + match[2].str() + "' as " + kind;
+  // Plain prefix and suffix tests, not std::regex: libstdc++'s regex recurses once per
+  // character and overflows the stack on a long argument.
+  std::string_view rest = text;
+  if (consume(rest, "Could not convert: ")) {
+    const std::size_t equals = rest.find(" = ");
+    const std::string_view name = rest.substr(0, equals);
+    if (equals != std::string_view::npos && isWord(name)) {
+      const CLI::Option* option = findOption(app, std::string(name));
+      const std::string kind = kindOf(option ? option->get_type_name() : "");
+      return std::string(name) + ": cannot read '" + std::string(rest.substr(equals + 3)) + "' as " + kind;
+    }
   }
-  if (std::regex_match(text, match, required)) return match[1].str() + ": is required";
-  if (std::regex_match(text, match, repeated))
-    return match[1].str() + ": takes one value (given twice, or a value starting with '-')";
-  if (std::regex_match(text, match, unexpected)) {
+  constexpr std::string_view isRequired = " is required";
+  if (rest = text; rest.ends_with(isRequired)) {
+    rest.remove_suffix(isRequired.size());
+    if (rest.size() > 1 && rest[0] == '-' && isWord(rest)) return std::string(rest) + ": is required";
+  }
+  constexpr std::string_view atMostOne = ": At Most 1 required but received ";
+  if (rest = text; rest.find(atMostOne) != std::string_view::npos) {
+    const std::string_view name = rest.substr(0, rest.find(atMostOne));
+    const std::string_view count = rest.substr(name.size() + atMostOne.size());
+    if (isWord(name) && !count.empty() && count.find_first_not_of("0123456789") == std::string_view::npos)
+      return std::string(name) + ": takes one value (given twice, or a value starting with '-')";
+  }
+  if (rest = text; consume(rest, "The following argument") && (consume(rest, " was") || consume(rest, "s were")) &&
+      consume(rest, " not expected: ")) {
     // CLI11 lists the leftover words: an unknown option and perhaps its value.
-    std::istringstream words(match[1].str());
+    std::istringstream words{std::string(rest)};
     for (std::string word; words >> word;)
       if (word.size() > 1 && word[0] == '-') return word + ": not an option of this command (see --help)";
-    return "unexpected argument " + match[1].str() + " (see --help)";
+    return "unexpected argument " + std::string(rest) + " (see --help)";
   }
   if (text == "A subcommand is required") return "expected a command: " + commandList(app) + " (see pak help)";
   return text;

@@ -233,6 +233,20 @@ TEST(CliErrors, BadAnimationFileNamesTheFileAndLine) {
                      script + ": not valid JSON at line 2, column ");
 }
 
+// A long bad value once overflowed the stack: the messages were read with std::regex, which
+// recurses once per character (a fuzz finding, tests/fuzz/regressions/animation_script/).
+TEST(CliErrors, LongBadValuesGiveOneShortLine) {
+  ScratchFolder folder("errors-long");
+  const std::string longWord(100'000, 'x');
+  const std::string config = folder.write("long.json", "{\"gap\": \"" + longWord + "\x01\"}");
+  const std::string o = "-o " + shellQuoted(folder.file("out.svg"));
+  expectOneLineError(kPack + o + " --config " + shellQuoted(config), config + ": not valid JSON at line 1, column ");
+  expectOneLineError(kPack + o + " " + longWord, "unexpected argument xxx");
+  expectOneLineError(kPack + o + " --gap " + longWord, "--gap: ");
+  const PakRun run = runPak(kPack + o + " " + longWord);
+  EXPECT_LT(run.err.size(), 600u);
+}
+
 TEST(CliErrors, UnknownOptionIsAUsageError) {
   PakRun run = runPak("inspect --no-such-option examples/scene.svg");
   EXPECT_EQ(run.exitCode, 2);
