@@ -53,8 +53,8 @@ void checkWritableTarget(const std::string& path) {
 std::string uniqueTemporaryName(const std::string& path) {
   static std::atomic<unsigned long> counter{0};
   fs::path target(path);
-  std::string name = "." + target.filename().string() + ".tmp-" + std::to_string(::getpid()) + "-" +
-                     std::to_string(counter.fetch_add(1));
+  std::string name = ".";  // appended, not "." + …: g++ 12 warns falsely (-Wrestrict) on that form
+  name += target.filename().string() + ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter.fetch_add(1));
   return (target.parent_path() / name).string();
 }
 

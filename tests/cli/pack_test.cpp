@@ -218,9 +218,11 @@ TEST(CliPack, WarnsAboutEveryUndrawnEffect) {
   for (const char* name : {"mask=", "filter=", "mix-blend-mode=", "marker-end=",
                            "<text> is not supported", "<image> is not supported"})
     EXPECT_NE(run.err.find(name), std::string::npos) << name << "\n" << run.err;
-  for (const std::string& line : run.errLines())
-    if (line.find("tests/svg/unsupported-effects.svg") != std::string::npos)
+  for (const std::string& line : run.errLines()) {
+    if (line.find("tests/svg/unsupported-effects.svg") != std::string::npos) {
       EXPECT_EQ(line.rfind("pak: warning: ", 0), 0u) << line;
+    }
+  }
 }
 
 // A dashed stroke keeps its dashes, scaled with the element like its width

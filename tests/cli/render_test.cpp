@@ -136,7 +136,7 @@ TEST(CliRender, UnknownOutputFormatFails) {
 TEST(CliRender, BadOptionsFail) {
   ScratchFolder folder("render-options");
   std::string out = shellQuoted(folder.file("scene.png"));
-  for (const std::string& options : {"--background chartreuse-ish", "--width 0", "--width 100000", "--width ten"}) {
+  for (const char* options : {"--background chartreuse-ish", "--width 0", "--width 100000", "--width ten"}) {
     PakRun run = runPak("render " + kScene + " -o " + out + " " + options);
     EXPECT_EQ(run.exitCode, 2) << options;
     EXPECT_EQ(run.errLines().size(), 1u) << options << ": " << run.err;

@@ -279,7 +279,9 @@ TEST(SkeletalStroke, FitWideningWidensEachSideWhereTheBlobLeavesRoom) {
   EXPECT_GT(frame.widenLeft.back(), 1.45);
   for (std::size_t i = 0; i < frame.widenLeft.size(); ++i) {
     EXPECT_LE(frame.widenLeft[i], 1.5);
-    if (i > 0) EXPECT_LE(std::abs(frame.widenLeft[i] - frame.widenLeft[i - 1]), 0.03 + 1e-12);
+    if (i > 0) {
+      EXPECT_LE(std::abs(frame.widenLeft[i] - frame.widenLeft[i - 1]), 0.03 + 1e-12);
+    }
   }
   const Region widened = bendRegion(outline, frame, line, 0.25);
   EXPECT_LT(area(subtract(widened, blob)), 1e-9 * area(widened));
