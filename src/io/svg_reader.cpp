@@ -884,11 +884,15 @@ class ShapeContext : public NodeContext {
     ArcToCubics cubics(cx, cy, rx, ry, rotation, ArcToCubics::circle_angle_tag(), theta1, theta2,
                        ArcToCubics::max_angle_tag(), boost::math::constants::half_pi<double>());
     // SVG++'s iterator sets its points before eof() turns false; g++ cannot see that.
+#if defined(__GNUC__) && !defined(__clang__)  // clang has no such warning
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
     for (ArcToCubics::iterator it(cubics); !it.eof(); it.advance())
       path_cubic_bezier_to(it.p1x(), it.p1y(), it.p2x(), it.p2y(), it.p3x(), it.p3y(), tag::coordinate::absolute());
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic pop
+#endif
   }
   void path_close_subpath() {
     if (subpaths_.empty()) return;
