@@ -4,6 +4,8 @@
 #include <sstream>
 #include <string_view>
 
+#include "pak/io/message_text.hpp"
+
 namespace pak::cli {
 namespace {
 
@@ -22,13 +24,6 @@ const CLI::Option* findOption(const CLI::App& app, const std::string& name) {
   return nullptr;
 }
 
-// Whether `text` starts with `prefix`; if so, drops it.
-bool consume(std::string_view& text, std::string_view prefix) {
-  if (text.substr(0, prefix.size()) != prefix) return false;
-  text.remove_prefix(prefix.size());
-  return true;
-}
-
 // One word: not empty, no white space (an option's name as CLI11 prints it).
 bool isWord(std::string_view text) {
   if (text.empty()) return false;
@@ -43,10 +38,9 @@ std::string usageErrorMessage(const CLI::App& app, const CLI::ParseError& error)
   std::string text = error.what();
   // A hidden option (an old spelling) has no name for CLI11 to put first.
   if (text.rfind(": ", 0) == 0) text.erase(0, 2);
-  // Plain prefix and suffix tests, not std::regex: libstdc++'s regex recurses once per
-  // character and overflows the stack on a long argument.
+  // Prefix and suffix tests (consumePrefix), not std::regex: an argument may be long.
   std::string_view rest = text;
-  if (consume(rest, "Could not convert: ")) {
+  if (consumePrefix(rest, "Could not convert: ")) {
     const std::size_t equals = rest.find(" = ");
     const std::string_view name = rest.substr(0, equals);
     if (equals != std::string_view::npos && isWord(name)) {
@@ -61,14 +55,14 @@ std::string usageErrorMessage(const CLI::App& app, const CLI::ParseError& error)
     if (rest.size() > 1 && rest[0] == '-' && isWord(rest)) return std::string(rest) + ": is required";
   }
   constexpr std::string_view atMostOne = ": At Most 1 required but received ";
-  if (rest = text; rest.find(atMostOne) != std::string_view::npos) {
-    const std::string_view name = rest.substr(0, rest.find(atMostOne));
-    const std::string_view count = rest.substr(name.size() + atMostOne.size());
+  if (const std::size_t at = text.find(atMostOne); at != std::string::npos) {
+    const std::string_view name = std::string_view(text).substr(0, at);
+    const std::string_view count = std::string_view(text).substr(at + atMostOne.size());
     if (isWord(name) && !count.empty() && count.find_first_not_of("0123456789") == std::string_view::npos)
       return std::string(name) + ": takes one value (given twice, or a value starting with '-')";
   }
-  if (rest = text; consume(rest, "The following argument") && (consume(rest, " was") || consume(rest, "s were")) &&
-      consume(rest, " not expected: ")) {
+  if (rest = text; consumePrefix(rest, "The following argument") &&
+                   (consumePrefix(rest, " was") || consumePrefix(rest, "s were")) && consumePrefix(rest, " not expected: ")) {
     // CLI11 lists the leftover words: an unknown option and perhaps its value.
     std::istringstream words{std::string(rest)};
     for (std::string word; words >> word;)

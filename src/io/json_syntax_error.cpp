@@ -3,15 +3,10 @@
 #include <cctype>
 #include <string_view>
 
+#include "pak/io/message_text.hpp"
+
 namespace pak {
 namespace {
-
-// Whether `text` starts with `prefix`; if so, drops it.
-bool consume(std::string_view& text, std::string_view prefix) {
-  if (text.substr(0, prefix.size()) != prefix) return false;
-  text.remove_prefix(prefix.size());
-  return true;
-}
 
 // The leading digits of `text`, dropped from it (empty when it starts with none).
 std::string_view digits(std::string_view& text) {
@@ -24,24 +19,24 @@ std::string_view digits(std::string_view& text) {
 
 }  // namespace
 
-// Read with plain prefix tests, not std::regex: libstdc++'s regex recurses once per character
-// and overflows the stack on the long "last read" token of a long bad string.
+// Read with prefix tests (consumePrefix): the "last read" token of a long bad string is long.
 InputError jsonSyntaxError(const std::string& file, const std::string& parserMessage) {
   std::string_view text = parserMessage;
   // "[json.exception.<kind>.<code>] "
   const std::size_t tagEnd = text.find("] ");
-  if (!consume(text, "[json.exception.") || tagEnd == std::string_view::npos) return InputError(file, "not valid JSON");
-  text = std::string_view(parserMessage).substr(tagEnd + 2);
+  if (!text.starts_with("[json.exception.") || tagEnd == std::string_view::npos) return InputError(file, "not valid JSON");
+  text.remove_prefix(tagEnd + 2);
   std::string_view located = text;
-  consume(located, "parse error ");
-  if (consume(located, "at line ")) {
+  consumePrefix(located, "parse error ");
+  if (consumePrefix(located, "at line ")) {
     const std::string_view line = digits(located);
     std::string_view column;
-    if (!line.empty() && consume(located, ", column ") && !(column = digits(located)).empty() && consume(located, ": "))
+    if (!line.empty() && consumePrefix(located, ", column ") && !(column = digits(located)).empty() &&
+        consumePrefix(located, ": "))
       return InputError(file, "not valid JSON at line " + std::string(line) + ", column " + std::string(column) + ": " +
                                   std::string(located));
   }
-  consume(text, "parse error: ");
+  consumePrefix(text, "parse error: ");
   return InputError(file, "not valid JSON: " + std::string(text));
 }
 

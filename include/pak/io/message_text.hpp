@@ -19,6 +19,15 @@ std::string oneLine(std::string_view text, std::size_t maxBytes = kMessageLength
 // A value to quote in a message: oneLine, cut at kQuotedValueLength.
 inline std::string quotedValue(std::string_view text) { return oneLine(text, kQuotedValueLength); }
 
+// Whether `text` starts with `prefix`; if so, drops it. For reading a library's message
+// (nlohmann's, CLI11's) into ours without std::regex, whose libstdc++ matcher recurses once
+// per character and overflows the stack on a long value.
+inline bool consumePrefix(std::string_view& text, std::string_view prefix) {
+  if (!text.starts_with(prefix)) return false;
+  text.remove_prefix(prefix.size());
+  return true;
+}
+
 // Whether `text` is valid UTF-8 (no overlong forms, no surrogates, nothing above U+10FFFF).
 bool isValidUtf8(std::string_view text);
 
