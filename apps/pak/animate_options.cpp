@@ -27,6 +27,8 @@ OptionTable<AnimationOptions> animationOptionTable() {
       {"stall-growth", field(&O::stop, &AnimationStopRule::stallGrowth), "stop when the slices' mean growth rose less than this over --stall-window iterations"},
       {"stall-window", field(&O::stop, &AnimationStopRule::stallWindow), "iterations over which --stall-growth is measured"},
       {"max-iterations", field(&O::stop, &AnimationStopRule::maxIterations), "stop after this many simulation steps"},
+      {"settle-iterations", field(&O::stop, &AnimationStopRule::settleIterations), "after the stop (not after --time-limit or Ctrl-C): this many more steps in which nothing grows and skins pressed into a neighbour give way with --settle-k-overlap, so the frame separation shrinks less (0: none, as in the thesis)"},
+      {"settle-k-overlap", field(&O::stop, &AnimationStopRule::settleOverlapStrength), "with --settle-iterations: k_ovr (eq. 4.4) during the settle"},
       {"frame-separation", field(&O::frameSeparation, &FrameSeparationOptions::rounds), "frames between slices in which elements overlap by a sliver or leave the container: each offending element shrinks 1 % about its centre per round, for at most this many rounds, until the frame is clean, eased over neighbouring frames (0: frames as interpolated, as in the thesis)"},
       {"frame-separation-samples", field(&O::frameSeparation, &FrameSeparationOptions::samples), "frames checked for --frame-separation, evenly over t (0: twice the slices); a frame between them that still overlaps is separated on its own"},
       {"frame-separation-ramp", field(&O::frameSeparation, &FrameSeparationOptions::ramp), "with --frame-separation: an element's shrinking eases in and out over this share of the animation on either side, so it does not pulse"},

@@ -68,6 +68,7 @@ nlohmann::json animateReport(const AnimateArguments& args, const AnimatedPacking
   report["envelope-triangles"] = animation.envelopeTriangles;
   report["slices"] = animation.slices;
   report["iterations"] = animation.iterations;
+  report["settle-iterations"] = animation.settleIterations;
   report["stop-reason"] = toString(animation.stopReason);
   report["threads-used"] = animation.threads;
   report["skin-fill-mean-over-slices"] = animation.fill;
@@ -109,7 +110,9 @@ nlohmann::json animateReport(const AnimateArguments& args, const AnimatedPacking
   report["legend"] = {
       {"skin-fill-mean-over-slices", "area of the elements' skins (art offset by half the gap) over the container's, mean over slices"},
       {"art-fill-mean-over-frames", "area painted by the elements' art and the fixed art over the container's, mean over the rendered frames"},
-      {"overlapping-slices-at-end", "slices with a vertex inside another element when the simulation stopped (before the frame separation)"},
+      {"iterations", "simulation steps, the settle's included"},
+      {"settle-iterations", "steps of the settle after the stop, in which nothing grew (--settle-iterations)"},
+      {"overlapping-slices-at-end", "slices with a vertex inside another element when the simulation ended, after the settle (before the frame separation)"},
       {"unfolded-slices", "slices relaxed toward their rest shape after the simulation, because their art crossed itself or did so between them and the next slice (a pair counts two)"},
       {"frames-with-overlaps", "rendered frames in which two elements' art overlaps by more than 1e-6 of the container's area"},
       {"frames-with-element-outside", "rendered frames with art outside the container by more than that"},

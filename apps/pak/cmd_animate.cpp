@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
+#include <string>
 
 #include "animate_arguments.hpp"
 #include "animate_report.hpp"
@@ -88,18 +90,25 @@ int runAnimate(AnimateArguments& args, const CLI::App& command) {
   const std::filesystem::path out(common.output);
 
   AnimationCallbacks callbacks;
-  RunEta eta(args.options.stop.maxIterations);
+  RunEta eta(args.options.stop.maxIterations + std::max(0, args.options.stop.settleIterations));
   if (!common.quiet)
     callbacks.onProgress = [&](const AnimationProgress& p) {
       const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
       char gap[40] = "";
       if (std::isfinite(p.largestSliceGap)) std::snprintf(gap, sizeof gap, "  widest gap %.1f", p.largestSliceGap);
-      // The stall rule's measure falls about exponentially: its logarithm, linearly.
-      std::fprintf(stderr, "pak animate: iteration %5d  fill %.3f  growing %d/%d slices  overlapping %d%s  %.1f s  %s\n",
-                   p.iteration, p.fill, p.growingSlices, p.slices, p.overlappingSlices, gap, elapsed,
-                   eta.record(p.iteration, elapsed, {static_cast<double>(p.growingSlices),
-                                                     p.largestSliceGap - args.options.stop.closeness,
-                                                     std::log(p.growthRise / args.options.stop.stallGrowth)}).c_str());
+      // The stall rule's measure falls about exponentially: its logarithm, linearly. In the
+      // settle, the steps left.
+      constexpr double kUnknown = std::numeric_limits<double>::infinity();
+      const RunEta::Measures left =
+          p.settleLeft >= 0 ? RunEta::Measures{static_cast<double>(p.settleLeft), kUnknown, kUnknown}
+                            : RunEta::Measures{static_cast<double>(p.growingSlices),
+                                               p.largestSliceGap - args.options.stop.closeness,
+                                               std::log(p.growthRise / args.options.stop.stallGrowth)};
+      char phase[64];
+      if (p.settleLeft >= 0) std::snprintf(phase, sizeof phase, "settling, %d steps to go", p.settleLeft);
+      else std::snprintf(phase, sizeof phase, "growing %d/%d slices", p.growingSlices, p.slices);
+      std::fprintf(stderr, "pak animate: iteration %5d  fill %.3f  %s  overlapping %d%s  %.1f s  %s\n", p.iteration,
+                   p.fill, phase, p.overlappingSlices, gap, elapsed, eta.record(p.iteration, elapsed, left).c_str());
       std::fflush(stderr);
     };
   if (!args.checkpoint.empty()) {
@@ -147,6 +156,8 @@ int runAnimate(AnimateArguments& args, const CLI::App& command) {
   seconds.simulation = std::chrono::duration<double>(simulated - start).count();
   seconds.rendering = std::chrono::duration<double>(renderedAt - simulated).count();
 
+  std::string stopText = toString(animation.stopReason);
+  if (animation.settleIterations > 0) stopText += ", then " + std::to_string(animation.settleIterations) + " settling";
   if (!common.quiet)
     std::fprintf(stderr,
                  "pak animate: %zu elements, %zu vertices, %zu springs, %d slices, %d iterations (%s), art fill %.3f "
@@ -154,7 +165,7 @@ int runAnimate(AnimateArguments& args, const CLI::App& command) {
                  "outline; simulation %.1f s, "
                  "rendering %.1f s; wrote %s\n",
                  animation.elements.size(), animation.vertices, animation.springs, animation.slices, animation.iterations,
-                 toString(animation.stopReason), audit.meanFill, audit.framesWithOverlap, frameCount, audit.framesOutside,
+                 stopText.c_str(), audit.meanFill, audit.framesWithOverlap, frameCount, audit.framesOutside,
                  audit.framesSelfIntersecting,
                  seconds.simulation, seconds.rendering, common.output.c_str());
   if (!common.report.empty())

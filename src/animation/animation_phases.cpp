@@ -66,6 +66,8 @@ void checkOptions(const AnimationOptions& o, int slices) {
   if (o.stop.stallWindow < 1) throw InputError("--stall-window", "must be at least 1");
   if (o.stop.maxIterations < 0) throw InputError("--max-iterations", "must not be negative");
   nonNegative(o.stop.timeLimit, "--time-limit");
+  if (o.stop.settleIterations < 0) throw InputError("--settle-iterations", "must not be negative");
+  nonNegative(o.stop.settleOverlapStrength, "--settle-k-overlap");
   const FrameSeparationOptions& f = o.frameSeparation;
   if (f.rounds < 0 || f.rounds > 100) throw InputError("--frame-separation", "must be between 0 and 100 rounds");
   if (!(f.step > 0.0 && f.step < 1.0)) throw InputError("--frame-separation", "the step must be in (0, 1)");
@@ -434,6 +436,7 @@ AnimationStop simulateAnimation(SpacetimeSimulation& sim, const AnimationRun& ru
     p.largestSliceGap = sim.largestSliceGap();
     p.minGrowth = sim.minGrowth();
     p.growthRise = meanGrowth.full() ? meanGrowth.rise() : std::numeric_limits<double>::infinity();
+    if (sim.settleSteps() > 0) p.settleLeft = options.stop.settleIterations - sim.settleSteps();
     return p;
   };
   auto state = [&] {
@@ -462,9 +465,20 @@ AnimationStop simulateAnimation(SpacetimeSimulation& sim, const AnimationRun& ru
         if (deadline.passed()) return deadline.requested() ? AnimationStop::Interrupted : AnimationStop::TimeLimit;
         return std::nullopt;
       });
+  const AnimationStop reason = stop.value_or(AnimationStop::IterationCap);
+  // The settle: after every checkpoint, so a resumed run settles the same state.
+  if (reason != AnimationStop::TimeLimit && reason != AnimationStop::Interrupted && options.stop.settleIterations > 0) {
+    sim.beginSettle(options.stop.settleOverlapStrength);
+    for (int k = 1; k <= options.stop.settleIterations; ++k) {
+      sim.step();
+      if (callbacks.onProgress && callbacks.progressEvery > 0 && k % callbacks.progressEvery == 0 &&
+          k < options.stop.settleIterations)  // the last one is printed below
+        callbacks.onProgress(progress());
+    }
+  }
   if (callbacks.onProgress) callbacks.onProgress(progress());
   sim.projectInside();  // after any checkpoint: a resumed run projects the same state
-  return stop.value_or(AnimationStop::IterationCap);
+  return reason;
 }
 
 AnimatedPacking collectAnimation(const AnimationRun& run, const AnimationSeeding& seeding, const SpacetimeSimulation& sim,
@@ -561,6 +575,7 @@ AnimatedPacking collectAnimation(const AnimationRun& run, const AnimationSeeding
   result.fixedArt = run.fixedArt;
   result.canonicalScale = frame.scale;
   result.iterations = sim.iteration();
+  result.settleIterations = sim.settleSteps();
   result.fill = sim.fill();
   result.overlappingSlices = sim.overlappingSlices();
   result.vertices = sim.vertexCount();

@@ -429,7 +429,7 @@ void SpacetimeSimulation::updateSlices(std::size_t begin, std::size_t end) {
       if (k > first) smooth = smooth && grown <= previousGrowth_[k - 1] + spacetime_.growthSpread;
       if (k < last) smooth = smooth && grown <= previousGrowth_[k + 1] + spacetime_.growthSpread;
     }
-    if (!overlapping && !sliceOutside(s) && smooth) growth_[s] = grown;
+    if (settleFrom_ < 0 && !overlapping && !sliceOutside(s) && smooth) growth_[s] = grown;
   }
 }
 
@@ -470,7 +470,7 @@ void SpacetimeSimulation::step() {
   applyLoopConstraints();
   std::copy(growth_.begin(), growth_.end(), previousGrowth_.begin());
   pool_.parallelFor(ns, 256, [&](std::size_t b, std::size_t e) { updateSlices(b, e); });
-  if (spacetime_.guidedGrowth > 0.0) keepGuidedUp();
+  if (spacetime_.guidedGrowth > 0.0 && settleFrom_ < 0) keepGuidedUp();
 
   // Reductions in a fixed order, so they do not depend on the thread count.
   double area = 0.0, largestGap = 0.0;
@@ -487,6 +487,11 @@ void SpacetimeSimulation::step() {
   overlappingSlices_ = overlapping;
   ++iteration_;
   assert(allFinite(position_.data(), position_.data() + position_.size()) && "a step left a non-finite position");
+}
+
+void SpacetimeSimulation::beginSettle(double overlapStrength) {
+  settleFrom_ = iteration_;
+  parameters_.overlapStrength = overlapStrength;
 }
 
 double SpacetimeSimulation::minGrowth() const {

@@ -71,6 +71,10 @@ class SpacetimeSimulation {
   void finalize(const Box& area);
 
   void step();
+  // From now on nothing grows and the overlap force has this strength (the settle after the
+  // stop, AnimationStopRule::settleIterations).
+  void beginSettle(double overlapStrength);
+  int settleSteps() const { return settleFrom_ < 0 ? 0 : iteration_ - settleFrom_; }
 
   // --- state (what a checkpoint saves; everything else is rebuilt from the inputs)
   int iteration() const { return iteration_; }
@@ -139,6 +143,7 @@ class SpacetimeSimulation {
   SimulationParameters parameters_;
   SpacetimeParameters spacetime_;
   ExplicitEuler integrator_;
+  int settleFrom_ = -1;  // the iteration of beginSettle (growth frozen from then), or -1
   GrowthRule growthRule_;  // per slice, capped at maxGrowth
   ThreadPool& pool_;
   bool finalized_ = false;

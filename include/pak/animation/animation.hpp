@@ -44,6 +44,7 @@ struct AnimationProgress {
   double largestSliceGap = 0.0;  // canonical units
   double minGrowth = 0.0;
   double growthRise = 0.0;        // mean growth's rise over the stall window (∞ until it is full)
+  int settleLeft = -1;            // in the settle after the stop: its steps still to come
 };
 
 struct AnimationCallbacks {
@@ -82,7 +83,8 @@ struct AnimatedPacking {
   Region container;              // input coordinates
   Region fixedArt;               // input: the fixed elements' art inside the container (obstacles)
   double canonicalScale = 1.0;   // canonical units per input unit
-  int iterations = 0;
+  int iterations = 0;            // the settle's included
+  int settleIterations = 0;      // the settle's (AnimationStopRule::settleIterations)
   AnimationStop stopReason = AnimationStop::IterationCap;
   double fill = 0.0;             // mean skin fill over slices at the end
   int overlappingSlices = 0;     // slices overlapping another element at the end
