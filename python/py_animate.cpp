@@ -76,7 +76,7 @@ AnimationResult animate(const py::object& container, const py::object& animation
     hook([&] {
       return py::dict("iteration"_a = p.iteration, "fill"_a = p.fill, "growing_slices"_a = p.growingSlices,
                       "overlapping_slices"_a = p.overlappingSlices, "slices"_a = p.slices,
-                      "largest_slice_gap"_a = p.largestSliceGap);
+                      "largest_slice_gap"_a = p.largestSliceGap, "settle_left"_a = p.settleLeft);
     });
   };
   const int frameCount = cli::renderedFrameCount(args, result.script);

@@ -36,6 +36,25 @@ TEST(AnimationPack, SpinningStarsFillTheDiscWithoutOverlapsAtTheSlices) {
   }
 }
 
+TEST(AnimationPack, TheSettleGrowsNothingAndLeavesFewerSlicesPressed) {
+  AnimationOptions options = test::quickAnimationOptions();
+  options.stop.maxIterations = 400;  // the stars press each other by then
+  options.stop.settleIterations = 0;
+  const AnimatedPacking unsettled =
+      packAnimation(test::discScene(), {test::starElement("star.svg")}, test::spinningStars(8), options);
+  options.stop.settleIterations = 100;
+  const AnimatedPacking settled =
+      packAnimation(test::discScene(), {test::starElement("star.svg")}, test::spinningStars(8), options);
+  EXPECT_EQ(unsettled.settleIterations, 0);
+  EXPECT_EQ(settled.settleIterations, 100);
+  EXPECT_EQ(settled.iterations, unsettled.iterations + 100);
+  ASSERT_EQ(settled.elements.size(), unsettled.elements.size());
+  for (std::size_t e = 0; e < settled.elements.size(); ++e)
+    EXPECT_EQ(settled.elements[e].sliceGrowth, unsettled.elements[e].sliceGrowth) << "element " << e;
+  EXPECT_GT(unsettled.overlappingSlices, 0);
+  EXPECT_LT(settled.overlappingSlices, unsettled.overlappingSlices);
+}
+
 TEST(AnimationPack, FrameZeroIsTheFirstSliceAndLoopsClose) {
   const AnimatedPacking a =
       packAnimation(test::discScene(), {test::starElement("star.svg")}, test::spinningStars(5), test::quickAnimationOptions());

@@ -47,7 +47,8 @@ TEST(CliAnimate, WritesGifAnimatedSvgFramesAndSheetThatAgree) {
   const auto report = nlohmann::json::parse(readWholeFile(dir.file("r.json")));
   EXPECT_EQ(report["elements"], 20);
   EXPECT_EQ(report["slices"], 6);
-  EXPECT_LE(report["iterations"].get<int>(), 400);
+  EXPECT_EQ(report["settle-iterations"], 100);  // the default, after the stop
+  EXPECT_LE(report["iterations"].get<int>(), 400 + 100);
   EXPECT_GT(report["vertices"].get<int>(), 20 * 6 * 8);
   EXPECT_GT(report["art-fill-mean-over-frames"].get<double>(), 0.2);
   EXPECT_EQ(report["frames-with-element-outside"], 0);

@@ -196,6 +196,8 @@ TEST(CliErrors, AnimateOptionsUnderPackNames) {
   expectOneLineError(animate + " --cell-size 0", "--cell-size: must be a positive number");
   expectOneLineError(animate + " --edge -1", "--k-edge: must be a non-negative number");
   expectOneLineError(animate + " --edge 30 --k-edge 40", "--edge: the same option as --k-edge");
+  expectOneLineError(animate + " --settle-iterations -1", "--settle-iterations: must not be negative");
+  expectOneLineError(animate + " --settle-k-overlap -5", "--settle-k-overlap: must be a non-negative number");
   const std::string config = out.write("both.json", R"({"edge": 30, "k-edge": 40})");
   expectOneLineError(animate + " --config " + shellQuoted(config),
                      config + ": \"edge\" and \"k-edge\" are the same option");

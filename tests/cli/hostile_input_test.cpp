@@ -57,7 +57,9 @@ std::string packing(const ScratchFolder& f) {
                                                    R"x(<g class="element"><rect x="50" y="50" width="30" height="30"/></g></g></svg>)x")) + " ";
 }
 
-const std::string kAnimate = "animate -c examples/animate/stars/disc.svg -q --frames 2 --sheet-frames 1 --svg-keyframes 2 --no-gif ";
+// A short settle: the rows bound their runs by --max-iterations.
+const std::string kAnimate =
+    "animate -c examples/animate/stars/disc.svg -q --frames 2 --sheet-frames 1 --svg-keyframes 2 --no-gif --settle-iterations 5 ";
 const std::string kPack = "pack -c examples/scene.svg -e examples/elements -q ";
 
 const Row kRows[] = {

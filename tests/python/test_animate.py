@@ -104,6 +104,9 @@ def test_progress_is_called_and_its_exception_stops_the_run(source, animation):
     seen = []
     pak.animate(disc(source), animation, progress=seen.append, progress_every=10, evenness_frames=0, **OPTIONS)
     assert seen and {"iteration", "fill", "growing_slices"} <= set(seen[0])
+    # The settle after the stop counts its steps down to the last call.
+    assert seen[0]["settle_left"] == -1 and seen[-1]["settle_left"] == 0
+    assert [p["settle_left"] for p in seen if p["settle_left"] >= 0] == list(range(90, -1, -10))
 
     def stop(progress):
         raise KeyError("stop")
