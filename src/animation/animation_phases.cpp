@@ -466,10 +466,11 @@ AnimationStop simulateAnimation(SpacetimeSimulation& sim, const AnimationRun& ru
         return std::nullopt;
       });
   const AnimationStop reason = stop.value_or(AnimationStop::IterationCap);
-  // The settle: after every checkpoint, so a resumed run settles the same state.
+  // The settle: after every checkpoint, so a resumed run settles the same state. The time
+  // limit and a stop request end it too (its steps are in the report).
   if (reason != AnimationStop::TimeLimit && reason != AnimationStop::Interrupted && options.stop.settleIterations > 0) {
     sim.beginSettle(options.stop.settleOverlapStrength);
-    for (int k = 1; k <= options.stop.settleIterations; ++k) {
+    for (int k = 1; k <= options.stop.settleIterations && !deadline.passed(); ++k) {
       sim.step();
       if (callbacks.onProgress && callbacks.progressEvery > 0 && k % callbacks.progressEvery == 0 &&
           k < options.stop.settleIterations)  // the last one is printed below

@@ -126,5 +126,21 @@ TEST(AnimationPhases, AStopRequestStopsTheRunAsTheTimeLimitDoes) {
   EXPECT_EQ(a.settleIterations, 0);
 }
 
+TEST(AnimationPhases, AStopRequestEndsTheSettle) {
+  AnimationOptions options = test::quickAnimationOptions();
+  std::atomic<bool> stop{false};
+  options.run.stopRequest = &stop;
+  AnimationCallbacks callbacks;
+  callbacks.progressEvery = 10;
+  callbacks.onProgress = [&](const AnimationProgress& p) {
+    if (p.settleLeft >= 0) stop = true;  // the settle's first report, after its 10th step
+  };
+  const AnimatedPacking a =
+      packAnimation(test::discScene(), {test::starElement("star.svg")}, test::spinningStars(4), options, callbacks);
+  EXPECT_EQ(a.stopReason, AnimationStop::IterationCap);  // what ended the growth
+  EXPECT_EQ(a.settleIterations, 10);
+  EXPECT_EQ(a.iterations, options.stop.maxIterations + 10);
+}
+
 }  // namespace
 }  // namespace pak
