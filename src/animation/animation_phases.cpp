@@ -465,10 +465,9 @@ AnimationStop simulateAnimation(SpacetimeSimulation& sim, const AnimationRun& ru
         if (deadline.passed()) return deadline.requested() ? AnimationStop::Interrupted : AnimationStop::TimeLimit;
         return std::nullopt;
       });
-  const AnimationStop reason = stop.value_or(AnimationStop::IterationCap);
   // The settle: after every checkpoint, so a resumed run settles the same state. The time
-  // limit and a stop request end it too (its steps are in the report).
-  if (reason != AnimationStop::TimeLimit && reason != AnimationStop::Interrupted && options.stop.settleIterations > 0) {
+  // limit and a stop request skip it or end it (its steps are in the report).
+  if (options.stop.settleIterations > 0) {
     sim.beginSettle(options.stop.settleOverlapStrength);
     for (int k = 1; k <= options.stop.settleIterations && !deadline.passed(); ++k) {
       sim.step();
@@ -479,7 +478,7 @@ AnimationStop simulateAnimation(SpacetimeSimulation& sim, const AnimationRun& ru
   }
   if (callbacks.onProgress) callbacks.onProgress(progress());
   sim.projectInside();  // after any checkpoint: a resumed run projects the same state
-  return reason;
+  return stop.value_or(AnimationStop::IterationCap);
 }
 
 AnimatedPacking collectAnimation(const AnimationRun& run, const AnimationSeeding& seeding, const SpacetimeSimulation& sim,
