@@ -20,11 +20,11 @@ struct AnimationStopRule {
   int stallWindow = 100;
   int maxIterations = 3000;
   double timeLimit = 0.0;  // seconds of wall time from the start of the run; 0: none
-  // The settle after the stop (not after a time limit or an interruption, which also end it): this many more
-  // steps in which nothing grows and the overlap force (eq. 4.4) has settleOverlapStrength.
-  // The run ends with about half the slices pressed into a neighbour; the stronger pull lets
-  // their skins give way there instead of the frame separation shrinking whole elements
-  // (docs/animationpak.md, twelfth round). 0: none, as in the thesis.
+  // The settle after the stop (not after a time limit or an interruption, which also end it):
+  // this many more steps in which nothing grows and the overlap force (eq. 4.4) has
+  // settleOverlapStrength. The run ends with about half the slices pressed into a neighbour;
+  // the stronger pull lets their skins give way there instead of the frame separation
+  // shrinking whole elements (docs/animationpak.md, twelfth round). 0: none, as in the thesis.
   int settleIterations = 100;
   double settleOverlapStrength = 1500.0;
 };
