@@ -7,6 +7,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake pkg-config time python3
+  clang                 # the release build's compiler (Makefile: RELEASE_CXX)
   libpolyclipping-dev   # offsets, booleans (Clipper)
   libgeos-dev           # Delaunay triangulation (GEOS C API)
   libsvgpp-dev libboost-dev  # SVG parsing (SVG++ with rapidxml_ns)
@@ -25,10 +26,10 @@ packages=(
   python3-shapely       # shapely geometries as the module's inputs, and their tests
 )
 
-# `make fuzz` (--fuzz): Debian's clang and its libFuzzer runtime; `make test` replays the
-# fuzz corpus with g++ and needs neither.
+# `make fuzz` (--fuzz): clang's libFuzzer runtime; `make test` replays the fuzz corpus with
+# g++ and does not need it.
 fuzz_packages=(
-  clang libclang-rt-dev
+  libclang-rt-dev
 )
 
 docs_packages=(
