@@ -15,7 +15,7 @@ deps:
 	@./scripts/install-deps.sh
 
 # Built with clang: the same results bit for bit as g++ (the tests run on g++), and AnimationPak
-# runs about a tenth faster (docs/animationpak.md, fifteenth round). RELEASE_CXX=g++ for g++.
+# runs 16–22 % faster (docs/animationpak.md, fifteenth round). RELEASE_CXX=g++ for g++.
 # A cache made by another compiler is set aside first: CMake would drop the options below with it.
 RELEASE_CXX ?= clang++
 release: deps

@@ -33,6 +33,16 @@ const BlockOffsets kBlock;
 // lowered by this much (canonical units) to stay one.
 constexpr double kRoundingSlack = 1e-9;
 
+// The float nearest `value` on the side of the bound it serves.
+float floatBelow(double value) {
+  const float f = static_cast<float>(value);
+  return static_cast<double>(f) > value ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
+}
+float floatAbove(double value) {
+  const float f = static_cast<float>(value);
+  return static_cast<double>(f) < value ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
+}
+
 Box3 triangleBox(Vec3 a, Vec3 b, Vec3 c) {
   Box3 box;
   box.add(a), box.add(b), box.add(c);
@@ -76,7 +86,7 @@ int SpacetimeNeighbours::cellOf(Vec3 p) const {
 void SpacetimeNeighbours::rebuild(const std::vector<Vec3>& origin) {
   assert(origin.size() == layout_.vertexElement.size());
   origin_ = origin;
-  std::fill(moved_.begin(), moved_.end(), 0.0);
+  std::fill(moved_.begin(), moved_.end(), 0.0f);
   buildGrid();
   buildCandidates();
   pool_.parallelFor(chunks_.size(), 1, [&](std::size_t begin, std::size_t end) {
@@ -94,8 +104,9 @@ bool SpacetimeNeighbours::track(const std::vector<Vec3>& positions) {
     for (std::size_t c = begin; c < end; ++c)
       for (std::size_t v = c * kChunk; v < std::min(nv, (c + 1) * kChunk); ++v)
         if (layout_.isSkin[v]) {
-          moved_[v] = std::sqrt(lengthSquared(positions[v] - origin_[v]));
-          if (moved_[v] > limit) past[c] = 1;
+          const double moved = std::sqrt(lengthSquared(positions[v] - origin_[v]));
+          moved_[v] = floatAbove(moved);
+          if (moved > limit) past[c] = 1;
         }
   });
   return std::find(past.begin(), past.end(), 1) != past.end();
@@ -302,7 +313,7 @@ void SpacetimeNeighbours::buildLists(int chunkIndex) {
         if (d2 > limit2) continue;
         const int tri = cellTriangles_[seen.j];
         if (count == kSorted) {  // beyond the sorted ones (not seen in practice): still listed
-          chunk.listed.push_back({0.0, layout_.triangles[tri]});
+          chunk.listed.push_back({0.0f, layout_.triangles[tri]});
           continue;
         }
         // Nearest first (ties by triangle), so that gather prunes early.
@@ -313,7 +324,7 @@ void SpacetimeNeighbours::buildLists(int chunkIndex) {
       }
       // Nearest first after any overflow (distance 0), so gather stops at the first entry out of reach.
       for (int i = 0; i < count; ++i)
-        chunk.listed.push_back({std::sqrt(sorted[i].d2), layout_.triangles[sorted[i].triangle]});
+        chunk.listed.push_back({floatBelow(std::sqrt(sorted[i].d2)), layout_.triangles[sorted[i].triangle]});
       chunk.runs.push_back({near[e].element, static_cast<int>(chunk.listed.size() - first)});
     }
     lists.runEnd = static_cast<int>(chunk.runs.size());
@@ -344,7 +355,7 @@ void SpacetimeNeighbours::gather(int v, const std::vector<Vec3>& positions, Hits
   const double shellReach2 = layout_.shellReach * layout_.shellReach;
   const Chunk& chunk = chunks_[v / kChunk];
   const VertexLists& lists = lists_[v];
-  const double margin = layout_.margin + kRoundingSlack, moved = moved_[v] + kRoundingSlack;
+  const double margin = layout_.margin + kRoundingSlack, moved = double{moved_[v]} + kRoundingSlack;
   const Listed* listed = chunk.listed.data() + lists.listedBegin;
   for (int r = lists.runBegin; r < lists.runEnd; ++r) {
     const auto [element, count] = chunk.runs[r];
@@ -355,11 +366,11 @@ void SpacetimeNeighbours::gather(int v, const std::vector<Vec3>& positions, Hits
     for (int i = 0; i < count; ++i) {
       // Lower bounds on the triangle's distance now: the margin's, which grows along the list
       // (so none after this one can be nearer), then the moves' (its own and its corners').
-      const double distanceAtOrigin = run[i].distance;
+      const double distanceAtOrigin = run[i].distance;  // a float, widened exactly
       const double bound = distanceAtOrigin - margin;
       if (bound > 0.0 && bound * bound >= best) break;
       const auto& c = run[i].corners;
-      const double tighter = distanceAtOrigin - moved - std::max({moved_[c[0]], moved_[c[1]], moved_[c[2]]});
+      const double tighter = distanceAtOrigin - moved - double{std::max({moved_[c[0]], moved_[c[1]], moved_[c[2]]})};
       if (tighter > 0.0 && tighter * tighter >= best) continue;
       const Vec3 a = positions[c[0]], b = positions[c[1]], d = positions[c[2]];
       if (distanceSquared(triangleBox(a, b, d), x) >= best) continue;

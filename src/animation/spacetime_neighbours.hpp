@@ -80,9 +80,10 @@ class SpacetimeNeighbours {
   // A vertex's lists: per other element within reach a run of listed triangles (nearest
   // first), and per element in the shell one centre.
   struct Run { int element, count; };
-  // A listed triangle: its distance at the origin (0 past the sorted ones), and its corners,
-  // so that `gather` reads no triangle table.
-  struct Listed { double distance; std::array<int, 3> corners; };
+  // A listed triangle: its distance at the origin (0 past the sorted ones), rounded down to a
+  // float (a lower bound takes no more, and the lists take a third less memory to read), and
+  // its corners, so that `gather` reads no triangle table.
+  struct Listed { float distance; std::array<int, 3> corners; };
   struct VertexLists { int runBegin = 0, runEnd = 0, listedBegin = 0, farBegin = 0, farEnd = 0; };
   // A triangle within the list reach of the vertex being listed: its place in the cell order,
   // the element's slot, its box's squared distance and its own (< 0: not computed).
@@ -114,8 +115,9 @@ class SpacetimeNeighbours {
   // outer shell.
   std::vector<int> vertexCell_, queriedCells_, candidates_;
   std::vector<CellCandidates> candidatesOf_;
-  // How far each skin vertex has moved from the origin (as `track` last measured it).
-  std::vector<double> moved_;
+  // How far each skin vertex has moved from the origin (as `track` last measured it), rounded
+  // up to a float: `gather` only subtracts it from a lower bound.
+  std::vector<float> moved_;
   std::vector<std::uint8_t> stalePerChunk_;  // scratch for track
   // The lists.
   std::vector<VertexLists> lists_;

@@ -145,10 +145,18 @@ void SpacetimeSimulation::finalize(const Box& area) {
   for (const auto& target : pendingTargets_) targetPull_[target.vertex] = target.position;
 
   // Springs by vertex, in spring order at each end (deterministic sums).
+  springStiffness_.clear();
+  auto kindOf = [&](double k) {
+    const auto known = std::find(springStiffness_.begin(), springStiffness_.end(), k);
+    if (known != springStiffness_.end()) return static_cast<int>(known - springStiffness_.begin());
+    springStiffness_.push_back(k);
+    return static_cast<int>(springStiffness_.size()) - 1;
+  };
   springsAt_ = buildVertexAdjacency<SpringEnd>(nv, [&](auto&& emit) {
     for (const PendingSpring& s : pending_) {
-      emit(s.a, SpringEnd{s.b, s.stiffness});
-      emit(s.b, SpringEnd{s.a, s.stiffness});
+      const int kind = kindOf(s.stiffness);
+      emit(s.a, SpringEnd{s.b, kind});
+      emit(s.b, SpringEnd{s.a, kind});
     }
   });
   springRest_.assign(springsAt_.entries.size(), 0.0);
@@ -284,7 +292,7 @@ void SpacetimeSimulation::computeForces(std::size_t begin, std::size_t end) {
       const SpringEnd& spring = ends[k];
       if (growthChanged_[slice] || growthChanged_[sliceOf_[spring.other]])
         rest[k] = distance(r, referencePoint_[spring.other]);
-      f += forces::edge(x, position_[spring.other], rest[k], spring.stiffness);
+      f += forces::edge(x, position_[spring.other], rest[k], springStiffness_[spring.kind]);
     }
 
     // Eq. 4.5 in (x, y): the container is extruded along t.

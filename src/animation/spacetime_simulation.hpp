@@ -160,9 +160,11 @@ class SpacetimeSimulation {
   std::vector<double> outsideDepth_;  // how far past the wall (0: inside; kFar: out where an element may leave)
   std::vector<double> nearestGap_;         // distance to the nearest other element or wall
   std::vector<Vec2> targetPull_;           // target-point spring anchor, per vertex (NaN: none)
-  // Springs by vertex (each spring appears at both ends).
-  struct SpringEnd { int other; double stiffness; };
+  // Springs by vertex (each spring appears at both ends). There are a few stiffnesses (edge,
+  // negative-space and time springs), so an end names its kind: half the bytes to read a step.
+  struct SpringEnd { int other, kind; };
   VertexAdjacency<SpringEnd> springsAt_;
+  std::vector<double> springStiffness_;  // by kind
   std::vector<double> springRest_;  // per spring end: its rest length, as last computed
   // Incident in-slice triangles by vertex (their corners), for the overlap force.
   VertexAdjacency<std::array<int, 3>> trianglesAt_;

@@ -85,8 +85,8 @@ TEST_F(TravellingElement, TheOthersPackAroundItsPartInsideWithoutOverlapsInEvery
     // The runner is drawn again one loop back and one ahead: a copy on each side.
     ASSERT_EQ(frame.elements.size(), count + 2);
     const std::size_t self = static_cast<std::size_t>(&runner() - result->elements.data());
-    EXPECT_EQ(frame.elements[count].skin[0], frame.elements[self].skin[0] - Vec2(kShift, 0.0));
-    EXPECT_EQ(frame.elements[count + 1].skin[0], frame.elements[self].skin[0] + Vec2(kShift, 0.0));
+    EXPECT_EQ(frame.elements[count].skin[0], (frame.elements[self].skin[0] - Vec2{kShift, 0.0}));
+    EXPECT_EQ(frame.elements[count + 1].skin[0], (frame.elements[self].skin[0] + Vec2{kShift, 0.0}));
   }
   // Outside, the runner is no element of the packing: a frame's checks see nothing of it.
   EXPECT_TRUE(checkedOutlines(animationFrame(*result, 0.0))[&runner() - result->elements.data()].empty());
