@@ -33,15 +33,11 @@ const BlockOffsets kBlock;
 // lowered by this much (canonical units) to stay one.
 constexpr double kRoundingSlack = 1e-9;
 
-// The float nearest `value` on the side of the bound it serves.
-float floatBelow(double value) {
-  const float f = static_cast<float>(value);
-  return static_cast<double>(f) > value ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
-}
-float floatAbove(double value) {
-  const float f = static_cast<float>(value);
-  return static_cast<double>(f) < value ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
-}
+// A float no larger (below) or no smaller (above) than a distance, for the bounds: rounding to
+// float moves a value by at most 2^-24 of it, so a 2^-20 widening first keeps the side (a
+// subnormal's absolute error is far inside kRoundingSlack). No branch and no libm call.
+float floatBelow(double distance) { return static_cast<float>(distance * (1.0 - 0x1p-20)); }
+float floatAbove(double distance) { return static_cast<float>(distance * (1.0 + 0x1p-20)); }
 
 Box3 triangleBox(Vec3 a, Vec3 b, Vec3 c) {
   Box3 box;
