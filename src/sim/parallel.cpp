@@ -1,12 +1,14 @@
 #include "sim/parallel.hpp"
 
+#include <cassert>
 #include <cstdint>
 
 namespace pak {
 
 ThreadPool::ThreadPool(int threads) {
   if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  for (int i = 1; i < threads; ++i) workers_.emplace_back([this] { workerLoop(); });
+  shares_ = std::vector<Share>(static_cast<std::size_t>(threads));
+  for (int i = 1; i < threads; ++i) workers_.emplace_back([this, i] { workerLoop(i); });
 }
 
 ThreadPool::~ThreadPool() {
@@ -16,14 +18,37 @@ ThreadPool::~ThreadPool() {
   for (auto& w : workers_) w.join();
 }
 
-void ThreadPool::drainChunks() {
-  const std::size_t chunks = (count_ + grain_ - 1) / grain_;
-  for (;;) {
-    std::size_t c = nextChunk_.fetch_add(1, std::memory_order_relaxed);
-    if (c >= chunks) return;
-    std::size_t begin = c * grain_;
-    std::size_t end = std::min(count_, begin + grain_);
-    kernel_(context_, begin, end);
+namespace {
+constexpr std::uint64_t pack(std::uint64_t next, std::uint64_t end) { return next << 32 | end; }
+}  // namespace
+
+void ThreadPool::drainChunks(int share) {
+  const std::size_t threads = shares_.size();
+  auto runChunk = [&](std::uint64_t c) {
+    const std::size_t begin = static_cast<std::size_t>(c) * grain_;
+    kernel_(context_, begin, std::min(count_, begin + grain_));
+  };
+  // Its own share from the front.
+  std::atomic<std::uint64_t>& own = shares_[static_cast<std::size_t>(share)].range;
+  for (std::uint64_t r = own.load(std::memory_order_relaxed);;) {
+    const std::uint64_t next = r >> 32, end = r & 0xffffffffu;
+    if (next >= end) break;
+    if (own.compare_exchange_weak(r, pack(next + 1, end), std::memory_order_relaxed)) {
+      runChunk(next);
+      r = own.load(std::memory_order_relaxed);
+    }
+  }
+  // Then the others' from the back.
+  for (std::size_t k = 1; k < threads; ++k) {
+    std::atomic<std::uint64_t>& other = shares_[(static_cast<std::size_t>(share) + k) % threads].range;
+    for (std::uint64_t r = other.load(std::memory_order_relaxed);;) {
+      const std::uint64_t next = r >> 32, end = r & 0xffffffffu;
+      if (next >= end) break;
+      if (other.compare_exchange_weak(r, pack(next, end - 1), std::memory_order_relaxed)) {
+        runChunk(end - 1);
+        r = other.load(std::memory_order_relaxed);
+      }
+    }
   }
 }
 
@@ -32,16 +57,19 @@ void ThreadPool::run(std::size_t n, std::size_t grain, Kernel kernel, void* cont
   context_ = context;
   count_ = n;
   grain_ = std::max<std::size_t>(1, grain);
-  nextChunk_.store(0, std::memory_order_relaxed);
+  const std::size_t chunks = (n + grain_ - 1) / grain_, threads = shares_.size();
+  assert(chunks < (std::uint64_t{1} << 32));
+  for (std::size_t t = 0; t < threads; ++t)
+    shares_[t].range.store(pack(chunks * t / threads, chunks * (t + 1) / threads), std::memory_order_relaxed);
   busyWorkers_.store(static_cast<int>(workers_.size()), std::memory_order_relaxed);
   epoch_.fetch_add(1, std::memory_order_release);
   epoch_.notify_all();
-  drainChunks();
+  drainChunks(0);
   // Workers finish their last chunk; spin briefly, since steps are short.
   while (busyWorkers_.load(std::memory_order_acquire) != 0) std::this_thread::yield();
 }
 
-void ThreadPool::workerLoop() {
+void ThreadPool::workerLoop(int share) {
   // Epoch 0 is the state before any job; starting from it (not from a load) means a job
   // published before this thread started is not missed.
   std::uint64_t seen = 0;
@@ -56,7 +84,7 @@ void ThreadPool::workerLoop() {
     }
     seen = now;
     if (stopping_.load(std::memory_order_acquire)) return;
-    drainChunks();
+    drainChunks(share);
     busyWorkers_.fetch_sub(1, std::memory_order_acq_rel);
   }
 }

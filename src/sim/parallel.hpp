@@ -3,8 +3,15 @@
 // Dispatch allocates nothing and takes no lock (atomics plus wait/notify), so it can run
 // inside the simulation step. Work items must write disjoint outputs; then results do not
 // depend on the number of threads.
+//
+// The chunks are split into one share per thread, in order. Each thread works through its own
+// share first, then takes what is left of the others' from their ends. So a simulation's step
+// after step mostly gives each thread the same items, whose data its core still holds, and the
+// load still balances (AnimationPak's steps ran about 5 % faster on two threads than with one
+// shared queue; docs/animationpak.md, seventeenth round).
 #include <atomic>
 #include <cstddef>
+#include <cstdint>
 #include <thread>
 #include <vector>
 
@@ -36,8 +43,15 @@ class ThreadPool {
  private:
   using Kernel = void (*)(void*, std::size_t, std::size_t);
   void run(std::size_t n, std::size_t grain, Kernel kernel, void* context);
-  void workerLoop();
-  void drainChunks();
+  void workerLoop(int share);
+  void drainChunks(int share);
+
+  // One thread's share of the current job's chunks, [next, end) packed in one word: its owner
+  // takes from the front, a thread that has run out of its own from the back, so each share
+  // stays one run of items.
+  struct alignas(64) Share {
+    std::atomic<std::uint64_t> range{0};
+  };
 
   std::vector<std::thread> workers_;
   // Current job; published by bumping `epoch_`.
@@ -45,7 +59,7 @@ class ThreadPool {
   void* context_ = nullptr;
   std::size_t count_ = 0;
   std::size_t grain_ = 1;
-  std::atomic<std::size_t> nextChunk_{0};
+  std::vector<Share> shares_;  // one per thread, the caller's first
   std::atomic<int> busyWorkers_{0};
   std::atomic<std::uint64_t> epoch_{0};
   std::atomic<bool> stopping_{false};
