@@ -69,6 +69,8 @@ SpacetimeNeighbours::SpacetimeNeighbours(Layout layout, ThreadPool& pool) : layo
   moved_.assign(nv, 0.0);
   lists_.assign(nv, {});
   chunks_.resize((nv + kChunk - 1) / kChunk);
+  const int elements = layout_.vertexElement.empty() ? 0 : *std::max_element(layout_.vertexElement.begin(), layout_.vertexElement.end()) + 1;
+  for (Chunk& chunk : chunks_) chunk.farSlot.assign(static_cast<std::size_t>(elements), -1);
 }
 
 int SpacetimeNeighbours::cellOf(Vec3 p) const {
@@ -199,21 +201,26 @@ void SpacetimeNeighbours::buildCandidates() {
       if (ix == nx_ - 1) box.hi.x = kInf;
       if (iy == ny_ - 1) box.hi.y = kInf;
       if (it == nt_ - 1) box.hi.t = kInf;
+      // The near groups from the front of the cell's room, the shell's from its middle: one
+      // pass over the shell sees each of its groups once.
       CellCandidates& out = candidatesOf_[index];
-      int k = out.begin;
-      auto addNear = [&](const std::array<int, 3>& o) {
+      int near = out.begin, far = out.begin;
+      for (const auto& o : kBlock.inner) far += groupsIn(blockCell(index, o));
+      for (const auto& o : kBlock.shell) far += groupsIn(blockCell(index, o));
+      out.shellBegin = far;
+      for (const auto& o : kBlock.inner)
         if (const int c = blockCell(index, o); c >= 0)
           for (int g = cellGroupStart_[c]; g < cellGroupStart_[c + 1]; ++g)
-            if (distanceSquared(box, groups_[g].box) <= nearReach2) candidates_[k++] = g;
-      };
-      for (const auto& o : kBlock.inner) addNear(o);
-      for (const auto& o : kBlock.shell) addNear(o);
-      out.end = out.shellBegin = k;
+            if (distanceSquared(box, groups_[g].box) <= nearReach2) candidates_[near++] = g;
       for (const auto& o : kBlock.shell)
         if (const int c = blockCell(index, o); c >= 0)
-          for (int g = cellGroupStart_[c]; g < cellGroupStart_[c + 1]; ++g)
-            if (distanceSquared(box, groups_[g].centre) < farReach2) candidates_[k++] = g;
-      out.shellEnd = k;
+          for (int g = cellGroupStart_[c]; g < cellGroupStart_[c + 1]; ++g) {
+            const Group& group = groups_[g];
+            if (distanceSquared(box, group.box) <= nearReach2) candidates_[near++] = g;
+            if (distanceSquared(box, group.centre) < farReach2) candidates_[far++] = g;
+          }
+      out.end = near;
+      out.shellEnd = far;
     }
   });
 }
@@ -331,16 +338,19 @@ void SpacetimeNeighbours::buildLists(int chunkIndex) {
       if (group.element == self) continue;
       const double d2 = lengthSquared(x - group.centre);
       if (d2 >= farReach2) continue;
-      int e = 0;
-      while (e < farCount && far[e].element != group.element) ++e;
-      if (e == farCount) {
+      int& e = chunk.farSlot[static_cast<std::size_t>(group.element)];
+      if (e < 0) {
         if (farCount == kElements) continue;
+        e = farCount;
         far[farCount++] = {group.element, d2, group.centre};
       } else if (d2 < far[e].d2) {
         far[e].d2 = d2, far[e].centre = group.centre;
       }
     }
-    for (int e = 0; e < farCount; ++e) chunk.far.push_back({far[e].centre, far[e].element});
+    for (int e = 0; e < farCount; ++e) {
+      chunk.far.push_back({far[e].centre, far[e].element});
+      chunk.farSlot[static_cast<std::size_t>(far[e].element)] = -1;
+    }
     lists.farEnd = static_cast<int>(chunk.far.size());
   }
 }

@@ -93,6 +93,9 @@ class SpacetimeNeighbours {
   struct Chunk {
     std::vector<Run> runs; std::vector<Listed> listed; std::vector<Far> far;
     std::vector<Passing> passing; std::vector<Seen> seen;  // scratch for one vertex at a time
+    // Per element, its place among the vertex's shell centres (-1: none yet): a group finds
+    // its element's without a search.
+    std::vector<int> farSlot;
   };
   static constexpr int kChunk = 512;  // vertices per chunk
 
