@@ -23,33 +23,23 @@ constexpr std::uint64_t pack(std::uint64_t next, std::uint64_t end) { return nex
 }  // namespace
 
 void ThreadPool::drainChunks(int share) {
-  const std::size_t threads = shares_.size();
-  auto runChunk = [&](std::uint64_t c) {
-    const std::size_t begin = static_cast<std::size_t>(c) * grain_;
-    kernel_(context_, begin, std::min(count_, begin + grain_));
-  };
-  // Its own share from the front.
-  std::atomic<std::uint64_t>& own = shares_[static_cast<std::size_t>(share)].range;
-  for (std::uint64_t r = own.load(std::memory_order_relaxed);;) {
-    const std::uint64_t next = r >> 32, end = r & 0xffffffffu;
-    if (next >= end) break;
-    if (own.compare_exchange_weak(r, pack(next + 1, end), std::memory_order_relaxed)) {
-      runChunk(next);
-      r = own.load(std::memory_order_relaxed);
-    }
-  }
-  // Then the others' from the back.
-  for (std::size_t k = 1; k < threads; ++k) {
-    std::atomic<std::uint64_t>& other = shares_[(static_cast<std::size_t>(share) + k) % threads].range;
-    for (std::uint64_t r = other.load(std::memory_order_relaxed);;) {
+  // Takes the chunks of one share, from its front (its owner) or its back (a helper).
+  auto drain = [&](std::atomic<std::uint64_t>& range, bool fromFront) {
+    for (std::uint64_t r = range.load(std::memory_order_relaxed);;) {
       const std::uint64_t next = r >> 32, end = r & 0xffffffffu;
-      if (next >= end) break;
-      if (other.compare_exchange_weak(r, pack(next, end - 1), std::memory_order_relaxed)) {
-        runChunk(end - 1);
-        r = other.load(std::memory_order_relaxed);
+      if (next >= end) return;
+      const std::uint64_t chunk = fromFront ? next : end - 1;
+      if (range.compare_exchange_weak(r, fromFront ? pack(next + 1, end) : pack(next, end - 1),
+                                      std::memory_order_relaxed)) {
+        const std::size_t begin = static_cast<std::size_t>(chunk) * grain_;
+        kernel_(context_, begin, std::min(count_, begin + grain_));
+        r = range.load(std::memory_order_relaxed);
       }
     }
-  }
+  };
+  const std::size_t threads = shares_.size(), own = static_cast<std::size_t>(share);
+  drain(shares_[own].range, true);
+  for (std::size_t k = 1; k < threads; ++k) drain(shares_[(own + k) % threads].range, false);
 }
 
 void ThreadPool::run(std::size_t n, std::size_t grain, Kernel kernel, void* context) {
