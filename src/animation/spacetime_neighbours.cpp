@@ -178,9 +178,12 @@ void SpacetimeNeighbours::buildCandidates() {
   // Room for every group of the block twice (near, then shell); each cell fills its own range.
   int room = 0;
   for (int cell : queriedCells_) {
-    candidatesOf_[cell].begin = room;
+    CellCandidates& c = candidatesOf_[cell];
+    c.begin = room;
     for (const auto& o : kBlock.inner) room += groupsIn(blockCell(cell, o));
-    for (const auto& o : kBlock.shell) room += 2 * groupsIn(blockCell(cell, o));
+    for (const auto& o : kBlock.shell) room += groupsIn(blockCell(cell, o));
+    c.shellBegin = room;  // the near groups fit before it, the shell's after
+    for (const auto& o : kBlock.shell) room += groupsIn(blockCell(cell, o));
   }
   if (candidates_.size() < static_cast<std::size_t>(room)) candidates_.resize(static_cast<std::size_t>(room) * 5 / 4);
   const double cell = layout_.cellSize, margin = layout_.margin;
@@ -204,10 +207,7 @@ void SpacetimeNeighbours::buildCandidates() {
       // The near groups from the front of the cell's room, the shell's from its middle: one
       // pass over the shell sees each of its groups once.
       CellCandidates& out = candidatesOf_[index];
-      int near = out.begin, far = out.begin;
-      for (const auto& o : kBlock.inner) far += groupsIn(blockCell(index, o));
-      for (const auto& o : kBlock.shell) far += groupsIn(blockCell(index, o));
-      out.shellBegin = far;
+      int near = out.begin, far = out.shellBegin;
       for (const auto& o : kBlock.inner)
         if (const int c = blockCell(index, o); c >= 0)
           for (int g = cellGroupStart_[c]; g < cellGroupStart_[c + 1]; ++g)
