@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include "pak/geom/closest_point_triangle.hpp"
+
 namespace pak {
 
 namespace {

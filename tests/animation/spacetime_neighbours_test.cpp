@@ -9,6 +9,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "pak/geom/closest_point_triangle.hpp"
 #include "pak/geom/rng.hpp"
 
 namespace pak {

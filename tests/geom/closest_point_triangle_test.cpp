@@ -1,6 +1,7 @@
 // closestPointOnTriangle against known answers and a dense sampling of the triangle.
 #include <gtest/gtest.h>
 
+#include "pak/geom/closest_point_triangle.hpp"
 #include "pak/geom/rng.hpp"
 #include "pak/geom/vec3.hpp"
 

@@ -32,8 +32,4 @@ inline double length(Vec3 a) { return std::sqrt(dot(a, a)); }
 inline double distance(Vec3 a, Vec3 b) { return length(a - b); }
 constexpr Vec2 spatial(Vec3 a) { return {a.x, a.y}; }
 
-// The point of triangle abc closest to p (Ericson, Real-Time Collision Detection, 5.1.5:
-// Voronoi regions of the vertices, then the edges, then the face).
-Vec3 closestPointOnTriangle(Vec3 p, Vec3 a, Vec3 b, Vec3 c);
-
 }  // namespace pak
