@@ -1,8 +1,9 @@
 #pragma once
 // The point of triangle abc closest to p (Ericson, Real-Time Collision Detection, 5.1.5:
 // Voronoi regions of the vertices, then the edges, then the face). Inline: the spacetime
-// neighbour search calls it a few dozen times per skin vertex and step, and a call it cannot
-// see through cost about 2 % of a run (docs/animationpak.md, eighteenth round).
+// neighbour search calls it for every skin vertex at each list rebuild and in each step, and
+// a call the compiler cannot see through cost about 2 % of a run (docs/animationpak.md,
+// eighteenth round).
 #include "pak/geom/vec3.hpp"
 
 namespace pak {
