@@ -182,10 +182,11 @@ void SpacetimeNeighbours::buildCandidates() {
   for (int cell : queriedCells_) {
     CellCandidates& c = candidatesOf_[cell];
     c.begin = room;
+    int shell = 0;
     for (const auto& o : kBlock.inner) room += groupsIn(blockCell(cell, o));
-    for (const auto& o : kBlock.shell) room += groupsIn(blockCell(cell, o));
-    c.shellBegin = room;  // the near groups fit before it, the shell's after
-    for (const auto& o : kBlock.shell) room += groupsIn(blockCell(cell, o));
+    for (const auto& o : kBlock.shell) shell += groupsIn(blockCell(cell, o));
+    c.shellBegin = room + shell;  // the near groups fit before it, the shell's after
+    room = c.shellBegin + shell;
   }
   if (candidates_.size() < static_cast<std::size_t>(room)) candidates_.resize(static_cast<std::size_t>(room) * 5 / 4);
   const double cell = layout_.cellSize, margin = layout_.margin;
