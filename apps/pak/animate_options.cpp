@@ -23,7 +23,7 @@ OptionTable<AnimationOptions> animationOptionTable() {
       {"growth-spread", field(&O::spacetime, &SpacetimeParameters::growthSpread), "a slice grows only while within this of its neighbouring slices' growth, so sizes do not pulse (0: independent slices, as in the thesis)"},
       {"guided-growth", field(&O::spacetime, &SpacetimeParameters::guidedGrowth), "a guided element grows, pushing through the others, while smaller than this share of the unguided elements' median growth at the same moment (0: the common rule, as in the thesis)"},
       {"guided-wall-give", length(&O::spacetime, &SpacetimeParameters::guidedWallGive), "a guided element, held on its path, keeps growing to its --guided-growth share while the crowd presses it no further than this past the wall (canonical units; the frames are projected back inside)"},
-      {"closeness", length(&O::stop, &AnimationStopRule::closeness), "stop when every slice is this close to a neighbour or the wall (canonical units; thesis 0.006 of the container)"},
+      {"closeness", length(&O::stop, &AnimationStopRule::closeness), "stop when every slice is this close to a neighbour or the wall (canonical units; 0: never, the default, since a slice in contact may still grow; the thesis stops at 6, 0.006 of the container)"},
       {"stall-growth", field(&O::stop, &AnimationStopRule::stallGrowth), "stop when the slices' mean growth rose less than this over --stall-window iterations"},
       {"stall-window", field(&O::stop, &AnimationStopRule::stallWindow), "iterations over which --stall-growth is measured"},
       {"max-iterations", field(&O::stop, &AnimationStopRule::maxIterations), "stop after this many simulation steps"},

@@ -102,7 +102,9 @@ int runAnimate(AnimateArguments& args, const CLI::App& command) {
       const RunEta::Measures left =
           p.settleLeft >= 0 ? RunEta::Measures{static_cast<double>(p.settleLeft), kUnknown, kUnknown}
                             : RunEta::Measures{static_cast<double>(p.growingSlices),
-                                               p.largestSliceGap - args.options.stop.closeness,
+                                               args.options.stop.closeness > 0.0
+                                                   ? p.largestSliceGap - args.options.stop.closeness
+                                                   : kUnknown,
                                                std::log(p.growthRise / args.options.stop.stallGrowth)};
       char phase[64];
       if (p.settleLeft >= 0) std::snprintf(phase, sizeof phase, "settling, %d steps to go", p.settleLeft);

@@ -5,8 +5,10 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <numeric>
 #include <numbers>
 #include <optional>
+#include <utility>
 
 #include "animation/element_animator.hpp"
 #include "pak/error.hpp"
@@ -61,7 +63,7 @@ void checkOptions(const AnimationOptions& o, int slices) {
     throw InputError("--cell-size", messageNumber(cell) + " is too fine: the spacetime grid would have " +
                                         messageNumber(cells) + " cells (at most " +
                                         messageNumber(limits::kMaxSpacetimeCells) + ")");
-  positive(o.stop.closeness, "--closeness");
+  nonNegative(o.stop.closeness, "--closeness");
   nonNegative(o.stop.stallGrowth, "--stall-growth");
   if (o.stop.stallWindow < 1) throw InputError("--stall-window", "must be at least 1");
   if (o.stop.maxIterations < 0) throw InputError("--max-iterations", "must not be negative");
@@ -129,6 +131,18 @@ Vec2 loopShift(const AnimatedElementSpec& spec, const AnimatedElementSpec& partn
 // Guided elements stay in the container unless they may leave it; one that travels (its loop
 // moves it, AnimatedElement::loopShift) must move far enough that its copies one shift away
 // never enter the container, which the simulation does not see.
+// The least k ≤ 12 for which k times the turn from `first` to `last` (centred shapes) is a
+// whole number of turns: 1 for no turn, 0 for none such.
+int loopTurnOrder(const std::vector<Vec2>& first, const std::vector<Vec2>& last) {
+  constexpr int kMostOrder = 12;
+  constexpr double kTolerance = 1e-4;  // radians, per turn
+  const Vec2 turn = SpacetimeSimulation::loopTurn(first.data(), last.data(), static_cast<int>(first.size()));
+  const double angle = std::atan2(turn.y, turn.x);
+  for (int k = 1; k <= kMostOrder; ++k)
+    if (std::abs(std::remainder(k * angle, 2.0 * std::numbers::pi)) < kTolerance * k) return k;
+  return 0;
+}
+
 void checkGuidedPaths(const AnimationRun& run) {
   const AnimationScript& script = run.script;
   const Box box = bounds(run.scene.container);
@@ -192,8 +206,26 @@ AnimationRun prepareAnimation(const Scene& scene, const Library& library, const 
   const double scale = librarySkinScale(library, nominalArea, gap);
 
   std::map<std::string, int> meshOfSource;
+  std::vector<ElementMeshOptions> meshOptionsOf;  // per mesh
+  std::vector<std::size_t> meshArt;               // per mesh: its library entry
   run.types.resize(script.elements.size());
   const double dtSlice = 1.0 / (slices - 1);
+  auto animate = [&](std::size_t i) {
+    const ElementArt& art = library[i];
+    AnimatedType& type = run.types[i];
+    try {
+      ElementAnimator animator(run.meshes[type.mesh].mesh.mesh, art.handles, type.spec->animation, centroid(art.outline),
+                               scale, script.loop);
+      type.shapes.assign(slices, {});
+      type.radius = 0.0;
+      for (int s = 0; s < slices; ++s) {
+        animator.shapeAt(s * dtSlice, type.shapes[s]);
+        for (Vec2 p : type.shapes[s]) type.radius = std::max(type.radius, length(p));
+      }
+    } catch (const InputError& error) {
+      throw InputError(art.source, std::string("element '") + type.spec->id + "': " + error.what());
+    }
+  };
   for (std::size_t i = 0; i < script.elements.size(); ++i) {
     const ElementArt& art = library[i];
     AnimatedType& type = run.types[i];
@@ -206,20 +238,29 @@ AnimationRun prepareAnimation(const Scene& scene, const Library& library, const 
       meshOptions.spacing = spacing;
       meshOptions.seed = options.run.seed * 7919 + run.meshes.size();
       run.meshes.push_back(prepareElement(art, scale, meshOptions));
+      meshOptionsOf.push_back(meshOptions);
+      meshArt.push_back(i);
     }
     type.mesh = it->second;
-    try {
-      ElementAnimator animator(run.meshes[type.mesh].mesh.mesh, art.handles, type.spec->animation, centroid(art.outline),
-                               scale, script.loop);
-      type.shapes.resize(slices);
-      for (int s = 0; s < slices; ++s) {
-        animator.shapeAt(s * dtSlice, type.shapes[s]);
-        for (Vec2 p : type.shapes[s]) type.radius = std::max(type.radius, length(p));
-      }
-    } catch (const InputError& error) {
-      throw InputError(art.source, std::string("element '") + type.spec->id + "': " + error.what());
-    }
+    animate(i);
   }
+  // A loop that turns an element by a part of a full turn joins its last slice to the first
+  // one turned. When the element's skin has the turn's symmetry, its mesh is made with it too,
+  // so that each vertex can join the one at its place (SpacetimeSimulation::addLoop).
+  if (script.loop)
+    for (std::size_t m = 0; m < run.meshes.size(); ++m) {
+      int order = 1;
+      for (const AnimatedType& type : run.types)
+        if (type.mesh == static_cast<int>(m)) order = std::lcm(order, loopTurnOrder(type.shapes.front(), type.shapes.back()));
+      if (order <= 1) continue;
+      ElementMeshOptions meshOptions = meshOptionsOf[m];
+      meshOptions.symmetry = order;
+      PreparedElement symmetric = prepareElement(library[meshArt[m]], scale, meshOptions);
+      if (symmetric.mesh.symmetry != order) continue;
+      run.meshes[m] = std::move(symmetric);
+      for (std::size_t i = 0; i < run.types.size(); ++i)
+        if (run.types[i].mesh == static_cast<int>(m)) animate(i);
+    }
   checkGuidedPaths(run);
   // Orientations along the guides (Fig. 5.18): FLOWPAK's field, sampled every 5 canonical units
   // along the strokes as `pak flow` does (thesis: 0.005 of the canvas).
@@ -386,11 +427,15 @@ SpacetimeSimulation spacetimeSimulation(const AnimationRun& run, const Animation
       if (toType.mesh != type.mesh)
         throw InputError(script.source, "element '" + type.spec->id + "' loops to '" + toType.spec->id +
                                             "', drawn from another SVG; a loop joins copies of one drawing");
-      const int n = static_cast<int>(run.meshes[type.mesh].mesh.mesh.vertices.size());
-      sim.addLoop(static_cast<int>(e), to,
-                  SpacetimeSimulation::loopTurn(instances[to].reference.data(),
-                                                instances[e].reference.data() + (slices - 1) * n, n),
-                  loopShift(*type.spec, *toType.spec) * run.setup.frame.scale);
+      const ElementMesh& mesh = run.meshes[type.mesh].mesh;
+      const int n = static_cast<int>(mesh.mesh.vertices.size());
+      const Vec2* first = instances[to].reference.data();
+      const Vec2* last = instances[e].reference.data() + (slices - 1) * n;
+      std::vector<int> partner;
+      if (mesh.symmetry > 1) partner = SpacetimeSimulation::loopPartners(first, last, n);
+      const Vec2 turn = SpacetimeSimulation::loopTurn(first, last, n, partner.empty() ? nullptr : partner.data());
+      sim.addLoop(static_cast<int>(e), to, turn, loopShift(*type.spec, *toType.spec) * run.setup.frame.scale,
+                  std::move(partner));
     }
   }
   // The grid covers the container, and the path of any element that leaves it.
@@ -459,7 +504,7 @@ AnimationStop simulateAnimation(SpacetimeSimulation& sim, const AnimationRun& ru
           callbacks.onProgress(progress());
       },
       [&](const StallWindow& window) -> std::optional<AnimationStop> {
-        if (sim.largestSliceGap() < options.stop.closeness) return AnimationStop::AllTouching;
+        if (sim.largestSliceGap() < options.stop.closeness) return AnimationStop::AllTouching;  // 0: never
         if (sim.minGrowth() >= options.spacetime.maxGrowth) return AnimationStop::GrowthCap;
         if (window.full() && window.rise() < options.stop.stallGrowth) return AnimationStop::Stalled;
         if (deadline.passed()) return deadline.requested() ? AnimationStop::Interrupted : AnimationStop::TimeLimit;

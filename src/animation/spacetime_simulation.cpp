@@ -4,6 +4,7 @@
 #include <cassert>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "pak/geom/polygon.hpp"
 #include "sim/forces.hpp"
@@ -94,22 +95,47 @@ int SpacetimeSimulation::addElement(const SpacetimeElementSetup& setup) {
   return element;
 }
 
-void SpacetimeSimulation::addLoop(int from, int to, Vec2 turn, Vec2 shift) {
+void SpacetimeSimulation::addLoop(int from, int to, Vec2 turn, Vec2 shift, std::vector<int> partner) {
   assert(!finalized_ && "loops are added before finalize");
   assert(elements_[from].mesh == elements_[to].mesh && lengthSquared(turn) > 0.0);
-  loops_.push_back({from, to, turn, shift});
+  assert(partner.empty() || static_cast<int>(partner.size()) == elements_[from].verticesPerSlice);
+  loops_.push_back({from, to, turn, shift, std::move(partner)});
 }
 
-Vec2 SpacetimeSimulation::loopTurn(const Vec2* first, const Vec2* last, int count) {
+Vec2 SpacetimeSimulation::loopTurn(const Vec2* first, const Vec2* last, int count, const int* partner) {
   Vec2 cf, cl;
   for (int i = 0; i < count; ++i) cf += first[i], cl += last[i];
   cf = cf / static_cast<double>(count), cl = cl / static_cast<double>(count);
   double norm = 0.0, c = 0.0, s = 0.0;
   for (int i = 0; i < count; ++i) {
-    const Vec2 p = first[i] - cf, q = last[i] - cl;
+    const Vec2 p = first[partner ? partner[i] : i] - cf, q = last[i] - cl;
     norm += lengthSquared(p), c += dot(p, q), s += cross(p, q);
   }
   return norm > 0.0 ? Vec2{c / norm, s / norm} : Vec2{1.0, 0.0};
+}
+
+std::vector<int> SpacetimeSimulation::loopPartners(const Vec2* first, const Vec2* last, int count) {
+  Vec2 cf, cl;
+  for (int i = 0; i < count; ++i) cf += first[i], cl += last[i];
+  cf = cf / static_cast<double>(count), cl = cl / static_cast<double>(count);
+  const double scale = length(loopTurn(first, last, count));
+  double extent = 0.0;
+  for (int i = 0; i < count; ++i) extent = std::max(extent, length(first[i] - cf));
+  const double tolerance = 1e-6 * extent * scale;
+  std::vector<int> partner(count, -1), taken(count, 0);
+  bool moved = false;
+  for (int i = 0; i < count; ++i) {
+    const Vec2 q = last[i] - cl;
+    int best = -1;
+    double best2 = tolerance * tolerance;
+    for (int j = 0; j < count; ++j) {
+      const double d2 = lengthSquared((first[j] - cf) * scale - q);
+      if (d2 <= best2) best = j, best2 = d2;
+    }
+    if (best < 0 || taken[best]) return {};
+    partner[i] = best, taken[best] = 1, moved = moved || best != i;
+  }
+  return moved ? partner : std::vector<int>{};
 }
 
 int SpacetimeSimulation::projectInside() {
@@ -371,7 +397,8 @@ void SpacetimeSimulation::applySliceConstraints(std::size_t elementBegin, std::s
 
 // 5.5.2, constraint 3: the last slice A of `from` and the first slice B of `to` meet. Their
 // centres move to the mean centre; each vertex's offset b from B's centre becomes the mean
-// of b and M⁻¹a (a: the same vertex's offset in A, M: the scripted turn), and A takes M b.
+// of b and M⁻¹a (a: its partner's offset in A, the same vertex unless the loop pairs them
+// otherwise; M: what is left of the scripted turn), and A takes M b.
 // With M = identity every vertex pair moves to its mean, the thesis's rule. A loop with a
 // shift joins A to B moved by it: A's centre is the mean centre plus the shift.
 void SpacetimeSimulation::applyLoopConstraints() {
@@ -387,12 +414,14 @@ void SpacetimeSimulation::applyLoopConstraints() {
     const Vec2 centre = (ca - loop.shift + cb) * 0.5;
     const Vec2 m = loop.turn;
     const double inv = 1.0 / lengthSquared(m);
+    const int* partner = loop.partner.empty() ? nullptr : loop.partner.data();
     for (int i = 0; i < n; ++i) {
-      const Vec2 ai = spatial(a[i]) - ca, bi = spatial(b[i]) - cb;
+      Vec3& bp = b[partner ? partner[i] : i];
+      const Vec2 ai = spatial(a[i]) - ca, bi = spatial(bp) - cb;
       const Vec2 back{(m.x * ai.x + m.y * ai.y) * inv, (-m.y * ai.x + m.x * ai.y) * inv};  // M⁻¹ a
       const Vec2 joined = (bi + back) * 0.5;
       const Vec2 ahead{m.x * joined.x - m.y * joined.y, m.y * joined.x + m.x * joined.y};  // M b
-      b[i].x = centre.x + joined.x, b[i].y = centre.y + joined.y;
+      bp.x = centre.x + joined.x, bp.y = centre.y + joined.y;
       a[i].x = centre.x + loop.shift.x + ahead.x, a[i].y = centre.y + loop.shift.y + ahead.y;
     }
   }

@@ -59,10 +59,19 @@ class SpacetimeSimulation {
   // that turns by 72° over the loop is joined to itself without being squeezed. With no turn,
   // (1, 0), this is the thesis's rule exactly. `shift` (canonical x, y): the last slice joins
   // the first one moved by it, so an element can leave on one side and come back on the other
-  // (a composition that tiles).
-  void addLoop(int from, int to, Vec2 turn, Vec2 shift = {});
-  // The similarity (s cos θ, s sin θ) that best maps the centred points `first` onto `last`.
-  static Vec2 loopTurn(const Vec2* first, const Vec2* last, int count);
+  // (a composition that tiles). `partner` (empty: the identity) pairs the last slice's vertex
+  // i with the first slice's vertex partner[i]: in a mesh with the turn's symmetry
+  // (ElementMeshOptions::symmetry), the one at the same place once turned, so that the two
+  // slices are joined point for point in the container, as the thesis joins an unturned loop,
+  // and what is left of `turn` is its scale.
+  void addLoop(int from, int to, Vec2 turn, Vec2 shift = {}, std::vector<int> partner = {});
+  // The similarity (s cos θ, s sin θ) that best maps the centred points `first` (taken as
+  // first[partner[i]] when `partner` is given) onto `last`.
+  static Vec2 loopTurn(const Vec2* first, const Vec2* last, int count, const int* partner = nullptr);
+  // For a mesh with the turn's symmetry, the partner of each of `last`'s points: the one of
+  // `first` at its place up to the loop's scale and the centres, within a millionth of the
+  // points' extent. Empty when some point has no such partner or all are their own.
+  static std::vector<int> loopPartners(const Vec2* first, const Vec2* last, int count);
   // Moves every vertex left outside the container onto its boundary, a hair inside (the
   // boundary force is a penalty, so pressed vertices rest slightly outside), except those of
   // elements that may leave the container. Returns how many.
@@ -185,7 +194,7 @@ class SpacetimeSimulation {
   std::vector<int> envelopeElement_;
   std::optional<SpacetimeNeighbours> neighbours_;
   // Loops.
-  struct Loop { int from, to; Vec2 turn, shift; };
+  struct Loop { int from, to; Vec2 turn, shift; std::vector<int> partner; };
   std::vector<Loop> loops_;
   // Build-time only.
   struct PendingSpring { int a, b; double stiffness; };

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <numbers>
 #include <set>
 #include <utility>
 
@@ -39,15 +40,18 @@ Polygon elementSkin(const Region& outline, double gap, double arcTolerance) {
 
 namespace {
 
-// Uniform samples along the skin every `spacing`, plus the skin vertex farthest inside any
-// chord that cuts more than `tolerance` into the skin (recursively), so that sharp tips such
-// as ears and tails stay inside the mesh instead of hanging outside it.
-Ring sampleSkinBoundary(const Ring& skin, double spacing, double tolerance) {
+// Uniform samples along the first `1 / pieces` of the skin's arclength every `spacing`, plus
+// the skin vertex farthest inside any chord that cuts more than `tolerance` into the skin
+// (recursively), so that sharp tips such as ears and tails stay inside the mesh instead of
+// hanging outside it.
+Ring sampleSkinBoundary(const Ring& skin, double spacing, double tolerance, int pieces = 1) {
   const std::size_t n = skin.size();
   std::vector<double> along(n + 1, 0.0);  // arclength at each skin vertex (and the closing one)
   for (std::size_t j = 0; j < n; ++j) along[j + 1] = along[j] + distance(skin[j], skin[(j + 1) % n]);
-  const double total = along[n];
-  const std::size_t count = std::max<std::size_t>(3, static_cast<std::size_t>(std::lround(total / spacing)));
+  const double total = pieces == 1 ? along[n] : along[n] / pieces;
+  // A piece rounds down, so that its copies take no more samples than the whole skin would.
+  const std::size_t count = pieces == 1 ? std::max<std::size_t>(3, static_cast<std::size_t>(std::lround(total / spacing)))
+                                        : std::max<std::size_t>(1, static_cast<std::size_t>(total / spacing));
   std::vector<double> stops;  // arclengths of the samples
   for (std::size_t k = 0; k < count; ++k) stops.push_back(total * static_cast<double>(k) / count);
   auto at = [&](double s) { return pointAtArclength(skin, s); };
@@ -79,6 +83,54 @@ Ring sampleSkinBoundary(const Ring& skin, double spacing, double tolerance) {
     for (double s : pieces) result.push_back(at(s));
   }
   return result;
+}
+
+// p turned about the origin by `step` times 360°/order.
+Vec2 turned(Vec2 p, int step, int order) { return rotated(p, 2.0 * std::numbers::pi * step / order); }
+
+// Whether turning the skin by 360°/order about the origin lays it on itself, within `tolerance`.
+bool hasSymmetry(const Ring& skin, int order, double tolerance) {
+  for (Vec2 p : skin)
+    if (closestPointOnRing(turned(p, 1, order), skin).distance > tolerance) return false;
+  return true;
+}
+
+// The boundary samples of one order-th of the skin, turned `order` times: a ring in order,
+// since a turn of a positively oriented ring about a centre inside it runs along the ring.
+Ring symmetricBoundary(const Ring& skin, double spacing, double tolerance, int order) {
+  const Ring piece = sampleSkinBoundary(skin, spacing, tolerance, order);
+  Ring ring;
+  for (int j = 0; j < order; ++j)
+    for (Vec2 p : piece) ring.push_back(turned(p, j, order));
+  return ring;
+}
+
+// Blue noise of one sector [0°, 360°/order) turned `order` times, plus the centre: samples
+// whose turned copies would come nearer than most of the radius to a kept one are dropped.
+std::vector<Vec2> symmetricInterior(const Polygon& polygon, const BlueNoiseOptions& noise, int order) {
+  constexpr double kNearest = 0.75;  // of the radius, between kept samples and their copies
+  const double sector = 2.0 * std::numbers::pi / order, nearest2 = kNearest * kNearest * noise.radius * noise.radius;
+  std::vector<Vec2> kept;  // the sector's samples and the centre
+  const Vec2 centre{0.0, 0.0};
+  if (pointInPolygon(centre, polygon) && closestPointOnRing(centre, polygon.outer).distance >= noise.boundaryMargin)
+    kept.push_back(centre);
+  const std::size_t centres = kept.size();
+  for (Vec2 p : blueNoiseSample(Region{polygon}, noise)) {
+    double angle = std::atan2(p.y, p.x);
+    if (angle < 0.0) angle += 2.0 * std::numbers::pi;
+    if (!(angle < sector)) continue;
+    bool roomy = true;
+    for (int j = 0; j < order && roomy; ++j) {
+      const Vec2 q = turned(p, j, order);
+      if (j > 0 && lengthSquared(q - p) < nearest2) roomy = false;
+      for (std::size_t i = 0; i < kept.size() && roomy; ++i) roomy = lengthSquared(q - kept[i]) >= nearest2;
+    }
+    if (roomy) kept.push_back(p);
+  }
+  std::vector<Vec2> interior(kept.begin(), kept.begin() + static_cast<std::ptrdiff_t>(centres));
+  for (int j = 0; j < order; ++j)
+    for (std::size_t i = centres; i < kept.size(); ++i) interior.push_back(turned(kept[i], j, order));
+  return interior;
 }
 
 std::pair<int, int> edgeKey(int a, int b) { return a < b ? std::pair{a, b} : std::pair{b, a}; }
@@ -117,14 +169,21 @@ ElementMesh buildElementMesh(const std::vector<Shape>& art, const Region& outlin
   if (skin.outer.size() < 3) throw InputError("", "element has no area to mesh");
   Ring skinRing = skin.outer;
   if (signedArea(skinRing) < 0) std::reverse(skinRing.begin(), skinRing.end());
-  Ring boundary = sampleSkinBoundary(skinRing, options.spacing, options.gap / 4.0);
+  // The skin's own symmetry up to its offset's arcs, and a tenth of the spacing besides.
+  const double symmetryTolerance = 2.0 * options.arcTolerance + 0.1 * options.spacing;
+  const int symmetry = options.symmetry > 1 && hasSymmetry(skinRing, options.symmetry, symmetryTolerance)
+                           ? options.symmetry : 1;
+  const double deepest = options.gap / 4.0;
+  Ring boundary = symmetry > 1 ? symmetricBoundary(skinRing, options.spacing, deepest, symmetry)
+                               : sampleSkinBoundary(skinRing, options.spacing, deepest);
   Polygon meshPolygon{boundary, {}};
 
   BlueNoiseOptions noise;
   noise.radius = options.spacing;
   noise.boundaryMargin = 0.6 * options.spacing;
   noise.seed = options.seed;
-  std::vector<Vec2> interior = blueNoiseSample(Region{meshPolygon}, noise);
+  std::vector<Vec2> interior = symmetry > 1 ? symmetricInterior(meshPolygon, noise, symmetry)
+                                            : blueNoiseSample(Region{meshPolygon}, noise);
   TriMesh triangulated = triangulatePolygon(meshPolygon, interior);
   if (triangulated.triangles.empty()) throw InputError("", "element mesh has no triangles");
 
@@ -134,6 +193,7 @@ ElementMesh buildElementMesh(const std::vector<Shape>& art, const Region& outlin
     indexOf.emplace(std::pair{triangulated.vertices[v].x, triangulated.vertices[v].y}, static_cast<int>(v));
   std::vector<int> newIndex(triangulated.vertices.size(), -1);
   ElementMesh result;
+  result.symmetry = symmetry;
   for (Vec2 p : boundary) {
     auto it = indexOf.find({p.x, p.y});
     if (it == indexOf.end() || newIndex[it->second] >= 0) continue;

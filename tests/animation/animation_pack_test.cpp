@@ -1,7 +1,9 @@
 // packAnimation end to end on a small scene, and frames (thesis 5.4–5.6).
 #include "pak/animation/animation.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include <gtest/gtest.h>
@@ -38,13 +40,13 @@ TEST(AnimationPack, SpinningStarsFillTheDiscWithoutOverlapsAtTheSlices) {
 
 TEST(AnimationPack, TheSettleGrowsNothingAndLeavesFewerSlicesPressed) {
   AnimationOptions options = test::quickAnimationOptions();
-  options.stop.maxIterations = 400;  // the stars press each other by then
+  options.stop.maxIterations = 700;  // the stars press each other by then
   options.stop.settleIterations = 0;
   const AnimatedPacking unsettled =
-      packAnimation(test::discScene(), {test::starElement("star.svg")}, test::spinningStars(8), options);
+      packAnimation(test::discScene(), {test::starElement("star.svg")}, test::spinningStars(12), options);
   options.stop.settleIterations = 100;
   const AnimatedPacking settled =
-      packAnimation(test::discScene(), {test::starElement("star.svg")}, test::spinningStars(8), options);
+      packAnimation(test::discScene(), {test::starElement("star.svg")}, test::spinningStars(12), options);
   EXPECT_EQ(unsettled.settleIterations, 0);
   EXPECT_EQ(settled.settleIterations, 100);
   EXPECT_EQ(settled.iterations, unsettled.iterations + 100);
@@ -68,7 +70,31 @@ TEST(AnimationPack, FrameZeroIsTheFirstSliceAndLoopsClose) {
     EXPECT_NEAR(std::abs(signedArea(Ring(a.elements[e].slices.back().begin(),
                                          a.elements[e].slices.back().begin() + a.elements[e].mesh.boundaryCount))),
                 std::abs(signedArea(first.elements[e].skin)), 1e-6 * area(a.container));
+    // The star's mesh has the turn's symmetry, so the two slices are the same points in the
+    // container, each vertex on the one a fifth of a turn away.
+    for (Vec2 p : a.elements[e].slices.back()) {
+      double nearest = std::numeric_limits<double>::infinity();
+      for (Vec2 q : a.elements[e].slices.front()) nearest = std::min(nearest, distance(p, q));
+      EXPECT_LT(nearest, 1e-6) << "element " << e;
+    }
   }
+}
+
+TEST(AnimationPack, TheThesisTouchingRuleStopsOnlyWhenAskedFor) {
+  // By default a run does not stop because every slice touches something (a touching slice
+  // may still grow); with --closeness it does, as in the thesis.
+  AnimationOptions options = test::quickAnimationOptions();
+  options.stop.maxIterations = 700;
+  options.stop.settleIterations = 0;
+  const AnimatedPacking plain =
+      packAnimation(test::discScene(), {test::starElement("star.svg")}, test::spinningStars(12), options);
+  EXPECT_EQ(plain.stopReason, AnimationStop::IterationCap);
+  EXPECT_EQ(plain.iterations, 700);
+  options.stop.closeness = 30.0;
+  const AnimatedPacking thesis =
+      packAnimation(test::discScene(), {test::starElement("star.svg")}, test::spinningStars(12), options);
+  EXPECT_EQ(thesis.stopReason, AnimationStop::AllTouching);
+  EXPECT_LT(thesis.iterations, 700);
 }
 
 TEST(AnimationPack, DeterministicWhateverTheThreadCount) {

@@ -148,20 +148,20 @@ TEST(FrameSeparation, ScaleBetweenSamplesIsInterpolatedAndALoopWrapsToTheFirst) 
 
 TEST(FrameSeparation, PackedFramesAtTheSamplesAreCleanAndTheShrinkingIsEased) {
   AnimationOptions options = test::quickAnimationOptions();
-  options.stop.maxIterations = 400;  // long enough for the stars to press each other
+  options.stop.maxIterations = 700;  // long enough for the stars to press each other
   options.stop.settleIterations = 0;  // the slivers the separation is for; the settle mends some
   options.frameSeparation.samples = 40;
   options.frameSeparation.shrinkPairs = true;  // the shrinking's easing; the moves below
   AnimationOptions unseparated = options;
   unseparated.frameSeparation.rounds = 0;
   const AnimatedPacking raw =
-      packAnimation(test::discScene(), {test::starElement("star.svg")}, test::spinningStars(8), unseparated);
+      packAnimation(test::discScene(), {test::starElement("star.svg")}, test::spinningStars(12), unseparated);
   EXPECT_TRUE(raw.separationTimes.empty());
   int overlapping = 0;  // the frames between slices, as interpolated, have slivers
   for (int k = 0; k < 40; ++k) overlapping += checked(animationFrame(raw, k / 40.0)).overlappingPairs > 0 ? 1 : 0;
   EXPECT_GT(overlapping, 0);
 
-  const AnimatedPacking a = packAnimation(test::discScene(), {test::starElement("star.svg")}, test::spinningStars(8), options);
+  const AnimatedPacking a = packAnimation(test::discScene(), {test::starElement("star.svg")}, test::spinningStars(12), options);
   ASSERT_EQ(a.separationTimes.size(), 40u);
   for (double t : a.separationTimes) {
     const PackingCheck check = checked(animationFrame(a, t));
@@ -183,13 +183,13 @@ TEST(FrameSeparation, PackedFramesAtTheSamplesAreCleanAndTheShrinkingIsEased) {
 
   // The same on two threads, to the bit.
   options.run.threads = 2;
-  const AnimatedPacking b = packAnimation(test::discScene(), {test::starElement("star.svg")}, test::spinningStars(8), options);
+  const AnimatedPacking b = packAnimation(test::discScene(), {test::starElement("star.svg")}, test::spinningStars(12), options);
   for (std::size_t e = 0; e < a.elements.size(); ++e) EXPECT_EQ(a.elements[e].separationScale, b.elements[e].separationScale);
 
   // By default the pairs move apart first: clean at every sample again, some elements shifted,
   // and the same on one thread and two.
   options.frameSeparation.shrinkPairs = false;
-  const AnimatedPacking moved = packAnimation(test::discScene(), {test::starElement("star.svg")}, test::spinningStars(8), options);
+  const AnimatedPacking moved = packAnimation(test::discScene(), {test::starElement("star.svg")}, test::spinningStars(12), options);
   int shifted = 0;
   for (const AnimatedElement& e : moved.elements) shifted += e.separationShift.empty() ? 0 : 1;
   EXPECT_GT(shifted, 0);
@@ -199,7 +199,7 @@ TEST(FrameSeparation, PackedFramesAtTheSamplesAreCleanAndTheShrinkingIsEased) {
     EXPECT_EQ(check.elementsOutside, 0) << "t = " << t;
   }
   options.run.threads = 1;
-  const AnimatedPacking movedAlone = packAnimation(test::discScene(), {test::starElement("star.svg")}, test::spinningStars(8), options);
+  const AnimatedPacking movedAlone = packAnimation(test::discScene(), {test::starElement("star.svg")}, test::spinningStars(12), options);
   for (std::size_t e = 0; e < moved.elements.size(); ++e) {
     EXPECT_EQ(moved.elements[e].separationShift, movedAlone.elements[e].separationShift);
     EXPECT_EQ(moved.elements[e].separationScale, movedAlone.elements[e].separationScale);

@@ -3,7 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <limits>
+#include <numbers>
 
 #include "animation/animation_fixtures.hpp"
 #include "sim/canonical_frame.hpp"
@@ -96,6 +98,81 @@ TEST(SpacetimeSimulation, LoopWithATurnJoinsTheSlicesUpToThatTurn) {
   const Vec2 turn = SpacetimeSimulation::loopTurn(first.data(), last.data(), n);
   EXPECT_NEAR(turn.x, std::cos(1.0), 1e-12);
   EXPECT_NEAR(turn.y, std::sin(1.0), 1e-12);
+}
+
+TEST(SpacetimeSimulation, SymmetricMeshJoinsATurnedLoopPointForPoint) {
+  // A five-pointed star with a mesh of its symmetry, turned by 72° over the loop and pressed
+  // against the container's wall: the last slice's vertex i joins the first slice's vertex at
+  // its place, so the two slices are one outline in the container. The turned join of a plain
+  // loop keeps the first slice's dents turned by 72° instead.
+  constexpr int kSlices = 6;
+  ElementArt star = test::starElement("star");
+  std::vector<Shape> art = star.shapes;
+  for (Shape& s : art)
+    for (Vec2& p : s.subpaths[0].points) p = (p - Vec2{50, 50}) * 3.0;
+  ElementMeshOptions meshOptions;
+  meshOptions.gap = 8.0;
+  meshOptions.spacing = 25.0;
+  meshOptions.symmetry = 5;
+  const ElementMesh mesh = buildElementMesh(art, {Polygon{art[0].subpaths[0].points, {}}}, meshOptions);
+  ASSERT_EQ(mesh.symmetry, 5);
+  const int n = static_cast<int>(mesh.mesh.vertices.size());
+  const Vec2 at{860, 500};
+  std::vector<Vec2> reference;
+  for (int s = 0; s < kSlices; ++s)
+    for (Vec2 p : mesh.mesh.vertices) reference.push_back(at + rotated(p, 0.4 * std::numbers::pi * s / (kSlices - 1)));
+  const Vec2* first = reference.data();
+  const Vec2* last = first + (kSlices - 1) * n;
+  const std::vector<int> partner = SpacetimeSimulation::loopPartners(first, last, n);
+  ASSERT_EQ(static_cast<int>(partner.size()), n);
+  for (int i = 0; i < n; ++i) EXPECT_NEAR(distance(first[partner[i]], last[i]), 0.0, 1e-9);
+  const Vec2 left = SpacetimeSimulation::loopTurn(first, last, n, partner.data());
+  EXPECT_NEAR(left.x, 1.0, 1e-12);  // nothing of the turn is left
+  EXPECT_NEAR(left.y, 0.0, 1e-12);
+
+  // The largest distance between the last slice's vertex i and the first slice's partner[i]
+  // after 40 steps, with the loop joined by partners or by the turn.
+  auto apart = [&](bool byPartner) {
+    Region container{Polygon{test::discRing({500, 500}, 450), {}}};
+    RegionIndex index{container, 10.0};
+    ThreadPool pool(1);
+    SimulationParameters parameters = AnimationOptions{}.simulation;
+    parameters.growthRate = 0.05;
+    SpacetimeSimulation sim(index, area(container), kSlices, parameters, SpacetimeParameters{}, pool);
+    SpacetimeElementSetup setup;
+    setup.mesh = &mesh;
+    setup.reference = reference;
+    setup.referenceCentre.assign(kSlices, at);
+    setup.initialGrowth = 0.5;
+    sim.addElement(setup);
+    if (byPartner)
+      sim.addLoop(0, 0, left, {}, partner);
+    else
+      sim.addLoop(0, 0, SpacetimeSimulation::loopTurn(first, last, n));
+    sim.finalize(Box{{0, 0}, {1000, 1000}});
+    for (int step = 0; step < 40; ++step) sim.step();
+    double most = 0.0;
+    for (int i = 0; i < n; ++i)
+      most = std::max(most, distance(spatial(sim.positions()[(kSlices - 1) * n + i]), spatial(sim.positions()[partner[i]])));
+    return most;
+  };
+  EXPECT_LT(apart(true), 1e-9);
+  EXPECT_GT(apart(false), 0.1);
+}
+
+TEST(SpacetimeSimulation, LoopPartnersNeedTheTurnsSymmetry) {
+  // The same star's plain mesh, turned by 72°: some vertex has no partner, so the loop keeps
+  // the turned join. With no turn every vertex is its own partner: no table either.
+  ElementArt star = test::starElement("star");
+  ElementMeshOptions meshOptions;
+  meshOptions.gap = 8.0;
+  meshOptions.spacing = 10.0;
+  const ElementMesh mesh = buildElementMesh(star.shapes, star.outline, meshOptions);
+  std::vector<Vec2> first, last;
+  for (Vec2 p : mesh.mesh.vertices) first.push_back(p), last.push_back(rotated(p, 0.4 * std::numbers::pi));
+  const int n = static_cast<int>(first.size());
+  EXPECT_TRUE(SpacetimeSimulation::loopPartners(first.data(), last.data(), n).empty());
+  EXPECT_TRUE(SpacetimeSimulation::loopPartners(first.data(), first.data(), n).empty());
 }
 
 TEST(SpacetimeSimulation, GrowsFreeSlicesAndKeepsTubesApart) {

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <numbers>
@@ -177,4 +178,70 @@ TEST(ElementMesh, EverySharedDataElementMeshes) {
   for (const auto& entry : std::filesystem::directory_iterator(data + "/mdi"))
     if (entry.path().extension() == ".svg") mdi.push_back(loadLibrary({entry.path().string()}).front());
   expectEveryElementMeshes(mdi);
+}
+
+namespace {
+
+// A five-pointed star about the origin (outer radius 60, inner 25).
+Ring star5() {
+  Ring ring;
+  for (int k = 0; k < 10; ++k) {
+    const double angle = std::numbers::pi / 2 + k * std::numbers::pi / 5, r = k % 2 == 0 ? 60.0 : 25.0;
+    ring.push_back({r * std::cos(angle), r * std::sin(angle)});
+  }
+  return ring;
+}
+
+// The index of the vertex at p, or -1.
+int vertexAt(const ElementMesh& m, Vec2 p, double tolerance) {
+  for (std::size_t v = 0; v < m.mesh.vertices.size(); ++v)
+    if (distance(m.mesh.vertices[v], p) <= tolerance) return static_cast<int>(v);
+  return -1;
+}
+
+}  // namespace
+
+TEST(ElementMesh, SymmetricMeshTurnsOntoItself) {
+  const Ring star = star5();
+  ElementMeshOptions options;
+  options.gap = 6.0;
+  options.spacing = 8.0;
+  options.symmetry = 5;
+  ElementMesh m = buildElementMesh({filledShape(star)}, Region{Polygon{star, {}}}, options);
+  ASSERT_EQ(m.symmetry, 5);
+  MeshCheck check = verifyMesh(m.mesh);
+  EXPECT_TRUE(check.ok) << (check.problems.empty() ? "" : check.problems.front());
+  EXPECT_EQ(m.boundaryCount % 5, 0);
+  EXPECT_GT(m.mesh.vertices.size(), static_cast<std::size_t>(m.boundaryCount) + 5);
+  // A turn by 72° maps every vertex onto another, skin onto skin, one to one; the ring keeps
+  // its order (vertex i goes to i + a fifth of the ring).
+  std::vector<int> image;
+  for (Vec2 p : m.mesh.vertices) image.push_back(vertexAt(m, rotated(p, 2 * std::numbers::pi / 5), 1e-9));
+  std::vector<int> sorted = image;
+  std::sort(sorted.begin(), sorted.end());
+  for (std::size_t v = 0; v < sorted.size(); ++v) ASSERT_EQ(sorted[v], static_cast<int>(v));
+  const int fifth = m.boundaryCount / 5;
+  for (int v = 0; v < m.boundaryCount; ++v) EXPECT_EQ(image[v], (v + fifth) % m.boundaryCount);
+  // Interior samples keep most of the blue noise's spacing across the sectors' edges.
+  for (std::size_t a = static_cast<std::size_t>(m.boundaryCount); a < m.mesh.vertices.size(); ++a)
+    for (std::size_t b = a + 1; b < m.mesh.vertices.size(); ++b)
+      EXPECT_GE(distance(m.mesh.vertices[a], m.mesh.vertices[b]), 0.75 * options.spacing - 1e-9);
+}
+
+TEST(ElementMesh, SymmetryTheSkinLacksIsNotForced) {
+  Ring star = star5();
+  star[0] = star[0] * 1.5;  // one long point
+  ElementMeshOptions options;
+  options.gap = 6.0;
+  options.spacing = 8.0;
+  options.symmetry = 5;
+  ElementMesh asked = buildElementMesh({filledShape(star)}, Region{Polygon{star, {}}}, options);
+  options.symmetry = 1;
+  ElementMesh plain = buildElementMesh({filledShape(star)}, Region{Polygon{star, {}}}, options);
+  EXPECT_EQ(asked.symmetry, 1);
+  ASSERT_EQ(asked.mesh.vertices.size(), plain.mesh.vertices.size());
+  for (std::size_t v = 0; v < plain.mesh.vertices.size(); ++v) {
+    EXPECT_EQ(asked.mesh.vertices[v].x, plain.mesh.vertices[v].x);
+    EXPECT_EQ(asked.mesh.vertices[v].y, plain.mesh.vertices[v].y);
+  }
 }

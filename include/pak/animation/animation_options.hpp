@@ -12,7 +12,12 @@ namespace pak {
 // When the spacetime simulation stops (5.5.3): whichever comes first, or when every slice
 // reached the growth cap (SpacetimeParameters::maxGrowth).
 struct AnimationStopRule {
-  double closeness = 6.0;  // every slice is this close to another element or the wall (thesis 0.006 of the container)
+  // Every slice is this close to another element or the wall: the thesis's rule, at 6 (0.006 of
+  // the container). 0: off. In Pak a slice in contact keeps growing while it overlaps nothing,
+  // and pocket pressure draws it on, so the rule ended runs with hundreds of slices still
+  // growing (the stars' seed 3 at 890 iterations, negative space 0.533: docs/animationpak.md,
+  // twentieth round); the stall rule ends them instead.
+  double closeness = 0.0;
   // The slices' mean growth rose by less than this over the last stallWindow iterations (a
   // slice grows by growthRate × Δt = 0.001 per free iteration). 0.005 stopped the stars a few
   // hundred iterations early, with pockets still closing (docs/animationpak.md, third round).

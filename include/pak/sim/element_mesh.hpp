@@ -41,6 +41,11 @@ struct ElementMeshOptions {
   double spacing = 10.0;      // distance between boundary samples and interior points
   double arcTolerance = 0.5;  // of the skin offset
   std::uint64_t seed = 1;     // interior blue noise
+  // k > 1: the vertices are placed k-fold rotationally symmetric about the origin, so that a
+  // turn by a multiple of 360°/k maps the mesh's vertices onto one another (a looping
+  // animation that turns a star joins each vertex to the one a turn away). Used only when the
+  // skin itself has that symmetry; ElementMesh::symmetry says whether it was.
+  int symmetry = 1;
 };
 
 struct ElementMesh {
@@ -52,6 +57,7 @@ struct ElementMesh {
   double skinArea = 0.0;   // area enclosed by the boundary ring
   double artArea = 0.0;    // area painted by the art
   Vec2 restCentroid;       // mean of the vertices (the "centre of mass" of unit masses)
+  int symmetry = 1;        // the options' symmetry if the skin had it, else 1
   // One binding per art point, in the order shapes → subpaths → points.
   std::vector<ArtBinding> bindings;
   NeighbourhoodFits smoothing;  // of the mesh's vertices, for replaySmoothArt
