@@ -13,6 +13,18 @@
 namespace pak {
 namespace {
 
+// The fixtures' five-pointed star, centred and three times as large, meshed with `symmetry`.
+ElementMesh starMesh(int symmetry = 1) {
+  std::vector<Shape> art = test::starElement("star").shapes;
+  for (Shape& s : art)
+    for (Vec2& p : s.subpaths[0].points) p = (p - Vec2{50, 50}) * 3.0;
+  ElementMeshOptions meshOptions;
+  meshOptions.gap = 8.0;
+  meshOptions.spacing = 25.0;
+  meshOptions.symmetry = symmetry;
+  return buildElementMesh(art, {Polygon{art[0].subpaths[0].points, {}}}, meshOptions);
+}
+
 // Two elements of one star mesh in a disc; element 0 loops to element 1 and 1 to 0.
 struct TwoTubes {
   ElementMesh mesh;
@@ -24,14 +36,7 @@ struct TwoTubes {
 
   explicit TwoTubes(int threads, double timeStrength = 4.0, bool crossLoop = true)
       : pool(threads), sim(index, area(container), kSlices, parameters(), spacetime(timeStrength), pool) {
-    ElementArt star = test::starElement("star");
-    std::vector<Shape> art = star.shapes;
-    for (Shape& s : art)
-      for (Vec2& p : s.subpaths[0].points) p = (p - Vec2{50, 50}) * 3.0;
-    ElementMeshOptions meshOptions;
-    meshOptions.gap = 8.0;
-    meshOptions.spacing = 25.0;
-    mesh = buildElementMesh(art, {Polygon{art[0].subpaths[0].points, {}}}, meshOptions);
+    mesh = starMesh();
     for (Vec2 at : {Vec2{420, 500}, Vec2{600, 500}}) {
       SpacetimeElementSetup setup;
       setup.mesh = &mesh;
@@ -106,15 +111,7 @@ TEST(SpacetimeSimulation, SymmetricMeshJoinsATurnedLoopPointForPoint) {
   // its place, so the two slices are one outline in the container. The turned join of a plain
   // loop keeps the first slice's dents turned by 72° instead.
   constexpr int kSlices = 6;
-  ElementArt star = test::starElement("star");
-  std::vector<Shape> art = star.shapes;
-  for (Shape& s : art)
-    for (Vec2& p : s.subpaths[0].points) p = (p - Vec2{50, 50}) * 3.0;
-  ElementMeshOptions meshOptions;
-  meshOptions.gap = 8.0;
-  meshOptions.spacing = 25.0;
-  meshOptions.symmetry = 5;
-  const ElementMesh mesh = buildElementMesh(art, {Polygon{art[0].subpaths[0].points, {}}}, meshOptions);
+  const ElementMesh mesh = starMesh(5);
   ASSERT_EQ(mesh.symmetry, 5);
   const int n = static_cast<int>(mesh.mesh.vertices.size());
   const Vec2 at{860, 500};
