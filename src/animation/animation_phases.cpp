@@ -128,9 +128,6 @@ Vec2 loopShift(const AnimatedElementSpec& spec, const AnimatedElementSpec& partn
   return spec.targets.back().position - partner.targets.front().position;
 }
 
-// Guided elements stay in the container unless they may leave it; one that travels (its loop
-// moves it, AnimatedElement::loopShift) must move far enough that its copies one shift away
-// never enter the container, which the simulation does not see.
 // The least k ≤ 12 for which k times the turn from `first` to `last` (centred shapes) is a
 // whole number of turns: 1 for no turn, 0 for none such.
 int loopTurnOrder(const std::vector<Vec2>& first, const std::vector<Vec2>& last) {
@@ -143,6 +140,9 @@ int loopTurnOrder(const std::vector<Vec2>& first, const std::vector<Vec2>& last)
   return 0;
 }
 
+// Guided elements stay in the container unless they may leave it; one that travels (its loop
+// moves it, AnimatedElement::loopShift) must move far enough that its copies one shift away
+// never enter the container, which the simulation does not see.
 void checkGuidedPaths(const AnimationRun& run) {
   const AnimationScript& script = run.script;
   const Box box = bounds(run.scene.container);

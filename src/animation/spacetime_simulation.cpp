@@ -397,8 +397,8 @@ void SpacetimeSimulation::applySliceConstraints(std::size_t elementBegin, std::s
 
 // 5.5.2, constraint 3: the last slice A of `from` and the first slice B of `to` meet. Their
 // centres move to the mean centre; each vertex's offset b from B's centre becomes the mean
-// of b and M⁻¹a (a: its partner's offset in A, the same vertex unless the loop pairs them
-// otherwise; M: what is left of the scripted turn), and A takes M b.
+// of b and M⁻¹a (a: the offset in A of the vertex paired with it, the same vertex unless the
+// loop has partners; M: what is left of the scripted turn), and A's vertex takes M b.
 // With M = identity every vertex pair moves to its mean, the thesis's rule. A loop with a
 // shift joins A to B moved by it: A's centre is the mean centre plus the shift.
 void SpacetimeSimulation::applyLoopConstraints() {

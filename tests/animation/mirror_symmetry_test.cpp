@@ -25,14 +25,20 @@ TEST(MirrorSymmetry, FramesAreSymmetricAndCleanOverBothHalves) {
   EXPECT_EQ(area(a.container), area(scene.container)) << "the frames are of the whole container";
   PackingCheckOptions tolerance;
   tolerance.areaTolerance = 1e-4 * area(a.container);
+  // The frames as simulated, without the frame separation's moves (which may take a skin a
+  // little past the line: docs/animationpak.md, Known limits).
+  AnimatedPacking simulated = a;
+  for (AnimatedElement& e : simulated.elements) e.separationScale.clear(), e.separationShift.clear();
   for (int k = 0; k < 8; ++k) {
     const double t = k / 8.0;
     const Packing frame = animationFrame(a, t);
     ASSERT_EQ(frame.elements.size(), 10u) << "each element and its reflection";
+    const Packing unseparated = animationFrame(simulated, t);
     double left = 0.0, right = 0.0;
     for (std::size_t e = 0; e < 5; ++e) {
       const PlacedElement &packed = frame.elements[e], &twin = frame.elements[5 + e];
-      for (Vec2 p : packed.skin) EXPECT_LE(p.x, kLine + 1e-6) << "simulated on the left";
+      for (Vec2 p : unseparated.elements[e].skin)
+        EXPECT_LE(p.x, kLine + 1e-6) << "simulated on the left; t = " << t << ", element " << e;
       ASSERT_EQ(packed.skin.size(), twin.skin.size());
       const std::size_t n = packed.skin.size();
       for (std::size_t i = 0; i < n; ++i) {  // reflected, in reverse order
