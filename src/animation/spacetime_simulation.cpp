@@ -12,6 +12,13 @@
 namespace pak {
 
 namespace {
+
+Vec2 meanOf(const Vec2* points, int count) {
+  Vec2 sum;
+  for (int i = 0; i < count; ++i) sum += points[i];
+  return sum / static_cast<double>(count);
+}
+
 constexpr double kNoTarget = std::numeric_limits<double>::quiet_NaN();
 constexpr double kFar = std::numeric_limits<double>::infinity();
 // How far (canonical units) a neighbour may come closer than the nearest one was when the
@@ -103,9 +110,7 @@ void SpacetimeSimulation::addLoop(int from, int to, Vec2 turn, Vec2 shift, std::
 }
 
 Vec2 SpacetimeSimulation::loopTurn(const Vec2* first, const Vec2* last, int count, const int* partner) {
-  Vec2 cf, cl;
-  for (int i = 0; i < count; ++i) cf += first[i], cl += last[i];
-  cf = cf / static_cast<double>(count), cl = cl / static_cast<double>(count);
+  const Vec2 cf = meanOf(first, count), cl = meanOf(last, count);
   double norm = 0.0, c = 0.0, s = 0.0;
   for (int i = 0; i < count; ++i) {
     const Vec2 p = first[partner ? partner[i] : i] - cf, q = last[i] - cl;
@@ -115,9 +120,7 @@ Vec2 SpacetimeSimulation::loopTurn(const Vec2* first, const Vec2* last, int coun
 }
 
 std::vector<int> SpacetimeSimulation::loopPartners(const Vec2* first, const Vec2* last, int count) {
-  Vec2 cf, cl;
-  for (int i = 0; i < count; ++i) cf += first[i], cl += last[i];
-  cf = cf / static_cast<double>(count), cl = cl / static_cast<double>(count);
+  const Vec2 cf = meanOf(first, count), cl = meanOf(last, count);
   const double scale = length(loopTurn(first, last, count));
   double extent = 0.0;
   for (int i = 0; i < count; ++i) extent = std::max(extent, length(first[i] - cf));

@@ -48,7 +48,7 @@ Ring sampleSkinBoundary(const Ring& skin, double spacing, double tolerance, int 
   const std::size_t n = skin.size();
   std::vector<double> along(n + 1, 0.0);  // arclength at each skin vertex (and the closing one)
   for (std::size_t j = 0; j < n; ++j) along[j + 1] = along[j] + distance(skin[j], skin[(j + 1) % n]);
-  const double total = pieces == 1 ? along[n] : along[n] / pieces;
+  const double total = along[n] / pieces;  // exact for one piece
   // A piece rounds down, so that its copies take no more samples than the whole skin would.
   const std::size_t count = pieces == 1 ? std::max<std::size_t>(3, static_cast<std::size_t>(std::lround(total / spacing)))
                                         : std::max<std::size_t>(1, static_cast<std::size_t>(total / spacing));
