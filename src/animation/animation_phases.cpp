@@ -52,6 +52,7 @@ void checkOptions(const AnimationOptions& o, int slices) {
   positive(p.maxGrowth, "--max-growth");
   nonNegative(p.growthSpread, "--growth-spread");
   nonNegative(p.guidedGrowth, "--guided-growth");
+  nonNegative(p.growthSpeedCap, "--growth-speed-cap");
   nonNegative(p.guidedWallGive, "--guided-wall-give");
   positive(p.timeLength, "--time-length");
   if (p.timeLength > limits::kMaxTimeLength)

@@ -50,8 +50,17 @@ int SpacetimeSimulation::addElement(const SpacetimeElementSetup& setup) {
   const int element = static_cast<int>(elements_.size());
   const int vertexBegin = static_cast<int>(position_.size());
   const int sliceBegin = static_cast<int>(growth_.size());
-  elements_.push_back(
-      {&mesh, vertexBegin, n, sliceBegin, setup.torsionStrength, !setup.targets.empty(), setup.leavesContainer});
+  // A step of growth moves the first slice's skin by the rate × Δt × its mean distance from
+  // the centre; SpacetimeParameters::growthSpeedCap bounds that by velocity-cap steps.
+  double growthRate = parameters_.growthRate;
+  if (spacetime_.growthSpeedCap > 0.0 && mesh.boundaryCount > 0) {
+    double radius = 0.0;
+    for (int v = 0; v < mesh.boundaryCount; ++v) radius += length(setup.reference[v] - setup.referenceCentre[0]);
+    radius /= mesh.boundaryCount;
+    if (radius > 0.0) growthRate = std::min(growthRate, spacetime_.growthSpeedCap * parameters_.velocityCap / radius);
+  }
+  elements_.push_back({&mesh, vertexBegin, n, sliceBegin, setup.torsionStrength, !setup.targets.empty(),
+                       setup.leavesContainer, GrowthRule(growthRate, parameters_.timeStep, spacetime_.maxGrowth)});
 
   const double dt = spacetime_.timeLength / (slices_ - 1);
   for (int s = 0; s < slices_; ++s) {
@@ -461,7 +470,7 @@ void SpacetimeSimulation::updateSlices(std::size_t begin, std::size_t end) {
     sliceOverlapping_[s] = overlapping ? 1 : 0;
     sliceOutsideDepth_[s] = depth;
     sliceGap_[s] = gap;
-    const double grown = growthRule_.grown(growth_[s]);
+    const double grown = element.growth.grown(growth_[s]);
     bool smooth = true;
     if (spacetime_.growthSpread > 0.0) {  // neighbours in t as they were before this step
       const int first = element.sliceBegin, last = first + slices_ - 1;
@@ -491,7 +500,7 @@ void SpacetimeSimulation::keepGuidedUp() {
       // free to be outside: one growth step.
       if (e.guided && growth_[s] <= floor && growth_[s] == previousGrowth_[s] &&
           (e.leavesContainer || sliceOutsideDepth_[s] <= spacetime_.guidedWallGive))
-        growth_[s] = growthRule_.grown(growth_[s]);
+        growth_[s] = e.growth.grown(growth_[s]);
     }
   }
 }

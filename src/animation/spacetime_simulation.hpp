@@ -123,6 +123,7 @@ class SpacetimeSimulation {
     double torsionStrength;
     bool guided;  // has target points
     bool leavesContainer;
+    GrowthRule growth;  // its slices' growth: the common rate, or slower for a large element
   };
   void computeReferencePoints(std::size_t begin, std::size_t end);
   // The cross-sections insideElementAt last interpolated. The skin vertices of one slice share
@@ -153,7 +154,7 @@ class SpacetimeSimulation {
   SpacetimeParameters spacetime_;
   ExplicitEuler integrator_;
   int settleFrom_ = -1;  // the iteration of beginSettle (growth frozen from then), or -1
-  GrowthRule growthRule_;  // per slice, capped at maxGrowth
+  GrowthRule growthRule_;  // the common rule, capped at maxGrowth (ElementRecord::growth may be slower)
   ThreadPool& pool_;
   bool finalized_ = false;
   int iteration_ = 0;

@@ -34,8 +34,10 @@ struct TwoTubes {
   SpacetimeSimulation sim;
   static constexpr int kSlices = 6;
 
-  explicit TwoTubes(int threads, double timeStrength = 4.0, bool crossLoop = true)
-      : pool(threads), sim(index, area(container), kSlices, parameters(), spacetime(timeStrength), pool) {
+  explicit TwoTubes(int threads, double timeStrength = 4.0, bool crossLoop = true,
+                    double growthSpeedCap = SpacetimeParameters{}.growthSpeedCap)
+      : pool(threads),
+        sim(index, area(container), kSlices, parameters(), spacetime(timeStrength, growthSpeedCap), pool) {
     mesh = starMesh();
     for (Vec2 at : {Vec2{420, 500}, Vec2{600, 500}}) {
       SpacetimeElementSetup setup;
@@ -58,9 +60,10 @@ struct TwoTubes {
     p.growthRate = 0.05;
     return p;
   }
-  static SpacetimeParameters spacetime(double timeStrength) {
+  static SpacetimeParameters spacetime(double timeStrength, double growthSpeedCap) {
     SpacetimeParameters p;
     p.timeStrength = timeStrength;
+    p.growthSpeedCap = growthSpeedCap;
     return p;
   }
 };
@@ -135,7 +138,9 @@ TEST(SpacetimeSimulation, SymmetricMeshJoinsATurnedLoopPointForPoint) {
     ThreadPool pool(1);
     SimulationParameters parameters = AnimationOptions{}.simulation;
     parameters.growthRate = 0.05;
-    SpacetimeSimulation sim(index, area(container), kSlices, parameters, SpacetimeParameters{}, pool);
+    SpacetimeParameters spacetime;
+    spacetime.growthSpeedCap = 0.0;  // the growth at 0.05 presses the star on the wall in 40 steps
+    SpacetimeSimulation sim(index, area(container), kSlices, parameters, spacetime, pool);
     SpacetimeElementSetup setup;
     setup.mesh = &mesh;
     setup.reference = reference;
@@ -179,6 +184,27 @@ TEST(SpacetimeSimulation, GrowsFreeSlicesAndKeepsTubesApart) {
   EXPECT_GT(tubes.sim.minGrowth(), before);
   EXPECT_EQ(tubes.sim.overlappingSlices(), 0);
   for (const Vec3& p : tubes.sim.positions()) ASSERT_TRUE(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.t));
+}
+
+TEST(SpacetimeSimulation, GrowthMovesALargeSkinNoFasterThanTheSpeedCap) {
+  // The star's skin lies about 100 units from its centre: at k_g = 0.05 a step of growth
+  // would move it about 0.5, past the velocity cap's 0.2 a step.
+  const SimulationParameters p = TwoTubes::parameters();
+  const double cap = 1.2;
+  TwoTubes capped(1, 4.0, false, cap), uncapped(1, 4.0, false, 0.0);
+  const ElementMesh& mesh = capped.mesh;
+  double radius = 0.0;
+  for (int v = 0; v < mesh.boundaryCount; ++v) radius += length(mesh.mesh.vertices[v]);
+  radius /= mesh.boundaryCount;
+  ASSERT_GT(p.growthRate * radius, cap * p.velocityCap);  // the cap binds
+  const double g0 = capped.sim.growth()[0];
+  capped.sim.step();
+  uncapped.sim.step();
+  // Slice 0 of element 0 is free: one step of growth, at the capped rate or the common one.
+  EXPECT_NEAR(capped.sim.growth()[0] - g0, cap * p.velocityCap / radius * p.timeStep, 1e-12);
+  EXPECT_NEAR(uncapped.sim.growth()[0] - g0, p.growthRate * p.timeStep, 1e-12);
+  // The skin moved by the growth step times its distance, at most cap × v_max Δt.
+  EXPECT_LE((capped.sim.growth()[0] - g0) * radius, cap * p.velocityCap * p.timeStep + 1e-12);
 }
 
 TEST(SpacetimeSimulation, SameResultWithOneOrTwoThreads) {

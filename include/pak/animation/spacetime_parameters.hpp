@@ -18,6 +18,12 @@ struct SpacetimeParameters {
   // pushes through the crowd instead of staying small (the unguided ones give way). 0: off
   // (thesis: guided slices grow by the common rule).
   double guidedGrowth = 0.8;
+  // A step of an element's growth moves its skin (the first slice's, at its mean distance
+  // from the centre) by at most this many velocity-cap steps (v_max Δt): growth that outruns
+  // the springs jams a large element into its neighbours (six stars in the disc at
+  // --growth-rate 0.015 ended with 72 of 100 frames outside; docs/animationpak.md,
+  // twenty-first round). 0: off (thesis: one rate for every element).
+  double growthSpeedCap = 1.2;
   // A guided slice is held on its path by its targets, so the crowd can press it past the wall
   // (by 1–1.5 units on the chase example); it still grows to its guidedGrowth share while no
   // deeper than this, in canonical units (the end projects every vertex back inside).
