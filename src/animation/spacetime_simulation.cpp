@@ -36,7 +36,6 @@ SpacetimeSimulation::SpacetimeSimulation(const RegionIndex& container, double co
       parameters_(parameters),
       spacetime_(spacetime),
       integrator_(parameters.timeStep, parameters.velocityCap, parameters.damping),
-      growthRule_(parameters.growthRate, parameters.timeStep, spacetime.maxGrowth),
       pool_(pool) {
   assert(slices >= 2);
 }
@@ -527,7 +526,7 @@ void SpacetimeSimulation::step() {
   for (std::size_t s = 0; s < ns; ++s) {
     area += sliceArea_[s];
     largestGap = std::max(largestGap, sliceGap_[s]);
-    growing += (!sliceOverlapping_[s] && !sliceOutside(s) && growthRule_.belowCap(growth_[s])) ? 1 : 0;
+    growing += (!sliceOverlapping_[s] && !sliceOutside(s) && elements_[sliceElement_[s]].growth.belowCap(growth_[s])) ? 1 : 0;
     overlapping += sliceOverlapping_[s];
   }
   fill_ = ns > 0 ? area / (containerArea_ * slices_) : 0.0;

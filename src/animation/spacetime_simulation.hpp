@@ -154,7 +154,6 @@ class SpacetimeSimulation {
   SpacetimeParameters spacetime_;
   ExplicitEuler integrator_;
   int settleFrom_ = -1;  // the iteration of beginSettle (growth frozen from then), or -1
-  GrowthRule growthRule_;  // the common rule, capped at maxGrowth (ElementRecord::growth may be slower)
   ThreadPool& pool_;
   bool finalized_ = false;
   int iteration_ = 0;
